@@ -1,0 +1,11 @@
+//! gaitlab: a procedural human walk after Mohelník 2016 (Bézier-driven pelvis and feet,
+//! analytic two-bone leg IK, terrain adaptation), with a headless CLI on top.
+//!
+//! The crate is layered: [`model`] is the walk and knows nothing of files or terminals;
+//! [`config`] reads and validates TOML into model parameters; [`output`] writes the joint
+//! table; [`analysis`] measures walks; [`cli`] is the command line.
+
+#![warn(missing_docs)]
+
+pub mod analysis;
+pub mod model;

@@ -1,0 +1,267 @@
+//! The model's curves and their default designs (spec §4's table).
+//!
+//! Each default is built from a few keys `(x, y, slope)` (see [`Curve::hermite`]) placed where
+//! published normal-adult gait data puts the curve's extrema. Cycle curves run over the right
+//! leg's cycle phase x ∈ [0, 1) starting at right heel strike; the left side reads them half a
+//! cycle later. Amplitude curves are unit-peak (±1) shapes scaled by the matching range
+//! parameter, so a curve override changes the shape and the parameter still sets the size.
+
+use crate::model::curve::{Curve, CurveError};
+use std::fmt;
+
+/// A curve of the model, by name (`[curves.<name>]` in the config).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum CurveName {
+    /// Pelvic obliquity (list), unit shape over the cycle; +1 = right hip highest.
+    PelvisObliquity,
+    /// Pelvic rotation, unit shape over the cycle; +1 = right hip furthest forward.
+    PelvisRotation,
+    /// Pelvic tilt, unit shape over the cycle; +1 = most anterior.
+    PelvisTilt,
+    /// Vertical pelvis shape between a double-support minimum (0) and a mid-stance maximum (1).
+    PelvisVertical,
+    /// Lateral pelvis displacement, unit shape over the cycle; +1 = furthest right.
+    PelvisLateral,
+    /// Forward pelvis progress 0→1 from mid double support to mid-stance.
+    PelvisForwardDsMs,
+    /// Forward pelvis progress 0→1 from mid-stance to mid double support.
+    PelvisForwardMsDs,
+    /// Foot-vs-ground angle (deg) over the heel-rise phase, for a 1.8 m stride.
+    HeelRise,
+    /// Swing heel progress 0→1 toward the footfall over the swing.
+    SwingForward,
+    /// Weight 0→1→0 pulling the swing heel from the step-width line to the hip line.
+    SwingLateral,
+    /// Foot pitch vs horizontal (deg, toe up +) over the swing, for 15° plantarflexion at toe-off.
+    SwingAnkle,
+    /// Heel height above the toe-off ground (m) over the swing, for a heel 0.20 m up at toe-off.
+    SwingHeelHeight,
+    /// Shoulder flexion, unit shape over the arm's side cycle; +1 = arm furthest forward.
+    Shoulder,
+    /// Elbow flexion, unit shape over the arm's side cycle; +1 = most flexed.
+    Elbow,
+}
+
+impl CurveName {
+    /// Every curve.
+    pub const ALL: [CurveName; 14] = [
+        CurveName::PelvisObliquity,
+        CurveName::PelvisRotation,
+        CurveName::PelvisTilt,
+        CurveName::PelvisVertical,
+        CurveName::PelvisLateral,
+        CurveName::PelvisForwardDsMs,
+        CurveName::PelvisForwardMsDs,
+        CurveName::HeelRise,
+        CurveName::SwingForward,
+        CurveName::SwingLateral,
+        CurveName::SwingAnkle,
+        CurveName::SwingHeelHeight,
+        CurveName::Shoulder,
+        CurveName::Elbow,
+    ];
+
+    /// The config name.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        use CurveName::*;
+        match self {
+            PelvisObliquity => "pelvis_obliquity",
+            PelvisRotation => "pelvis_rotation",
+            PelvisTilt => "pelvis_tilt",
+            PelvisVertical => "pelvis_vertical",
+            PelvisLateral => "pelvis_lateral",
+            PelvisForwardDsMs => "pelvis_forward_ds_ms",
+            PelvisForwardMsDs => "pelvis_forward_ms_ds",
+            HeelRise => "heel_rise",
+            SwingForward => "swing_forward",
+            SwingLateral => "swing_lateral",
+            SwingAnkle => "swing_ankle",
+            SwingHeelHeight => "swing_heel_height",
+            Shoulder => "shoulder",
+            Elbow => "elbow",
+        }
+    }
+
+    /// The curve of a config name.
+    #[must_use]
+    pub fn from_key(key: &str) -> Option<CurveName> {
+        CurveName::ALL.into_iter().find(|c| c.key() == key)
+    }
+
+    /// What x and y mean, for docs and plot axes.
+    #[must_use]
+    pub fn axes(self) -> (&'static str, &'static str) {
+        use CurveName::*;
+        match self {
+            PelvisObliquity | PelvisRotation | PelvisTilt | PelvisLateral | Shoulder | Elbow => {
+                ("gait cycle (0-1)", "unit shape (±1)")
+            }
+            PelvisVertical | PelvisForwardDsMs | PelvisForwardMsDs => ("half step (0-1)", "progress (0-1)"),
+            HeelRise => ("heel-rise phase (0-1)", "foot-ground angle (deg)"),
+            SwingForward | SwingLateral => ("swing (0-1)", "weight (0-1)"),
+            SwingAnkle => ("swing (0-1)", "foot pitch (deg)"),
+            SwingHeelHeight => ("swing (0-1)", "heel height (m)"),
+        }
+    }
+
+    /// Whether the curve repeats over the gait cycle (its ends must meet).
+    #[must_use]
+    pub fn is_cyclic(self) -> bool {
+        use CurveName::*;
+        matches!(self, PelvisObliquity | PelvisRotation | PelvisTilt | PelvisLateral | Shoulder | Elbow)
+    }
+
+    /// The default design.
+    #[must_use]
+    pub fn default_curve(self) -> Curve {
+        let keys: &[(f64, f64, f64)] = match self {
+            // Lin et al. 2014 (and Perry & Burnfield, Gait Analysis, ch. 8): the stance-side hip
+            // is highest just after loading, as the opposite side drops at opposite toe-off
+            // (x = 0.15, end of the double support after right heel strike), lowest mirrored at
+            // 0.65, with the fast change inside double support and a slow fall in single support.
+            CurveName::PelvisObliquity => {
+                &[(0.0, -0.5, 3.0), (0.15, 1.0, 0.0), (0.5, 0.5, -3.0), (0.65, -1.0, 0.0), (1.0, -0.5, 3.0)]
+            }
+            // Perry & Burnfield: the pelvis rotates forward with the swinging limb; the right hip
+            // is furthest forward at right heel strike (x = 0) and furthest back at left heel
+            // strike (0.5), passing neutral at mid-stance (0.25 / 0.75). Close to a cosine.
+            CurveName::PelvisRotation => &[(0.0, 1.0, 0.0), (0.5, -1.0, 0.0), (1.0, 1.0, 0.0)],
+            // Whittle's gait notes [1]: two small waves a cycle; most posterior in loading
+            // response (0.12 / 0.62), most anterior in terminal stance (0.40 / 0.90).
+            CurveName::PelvisTilt => &[
+                (0.0, 0.5, -8.0),
+                (0.12, -1.0, 0.0),
+                (0.40, 1.0, 0.0),
+                (0.5, 0.5, -8.0),
+                (0.62, -1.0, 0.0),
+                (0.90, 1.0, 0.0),
+                (1.0, 0.5, -8.0),
+            ],
+            // Saunders, Inman & Eberhart 1953: a smooth sinusoid-like rise from the double-support
+            // minimum to the mid-stance maximum, level at both ends.
+            CurveName::PelvisVertical => &[(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)],
+            // Orendurff et al. 2004: one sway a cycle over the stance foot, furthest right at
+            // right mid-stance (0.31), crossing the midline at mid double support (0.06 / 0.56).
+            // Keys sample sin(2π(x − 0.06)) with its slopes.
+            CurveName::PelvisLateral => &[
+                (0.0, -0.368, 5.86),
+                (0.06, 0.0, 6.283),
+                (0.31, 1.0, 0.0),
+                (0.56, 0.0, -6.283),
+                (0.81, -1.0, 0.0),
+                (1.0, -0.368, 5.86),
+            ],
+            // Forward speed of the centre of mass is ±10–12 % about its mean, fastest in double
+            // support and slowest at mid-stance (Orendurff 2004; Chung & Hahn's velocity curves):
+            // the half-step curves start and end with slopes 1.12 and 0.88 of the mean.
+            CurveName::PelvisForwardDsMs => &[(0.0, 0.0, 1.12), (1.0, 1.0, 0.88)],
+            CurveName::PelvisForwardMsDs => &[(0.0, 0.0, 0.88), (1.0, 1.0, 1.12)],
+            // Thesis fig 6.5: slow lift first, faster later. At a 1.8 m stride the foot is 30° up
+            // at opposite heel strike (x ≈ 0.6) and 80° at toe-off; scaled by (stride/1.8)² a
+            // 1.41 m stride gives 18° and 49°, as in Perry's foot-floor angles.
+            CurveName::HeelRise => &[(0.0, 0.0, 0.0), (0.6, 30.0, 110.0), (1.0, 80.0, 140.0)],
+            // Thesis fig 6.6 and Winter's heel-marker data: slow at toe-off and heel strike,
+            // fastest just after mid-swing.
+            CurveName::SwingForward => &[(0.0, 0.0, 0.3), (0.55, 0.6, 1.9), (1.0, 1.0, 0.15)],
+            // Thesis fig 6.7: step-width line at both ends, hip line at mid-swing.
+            CurveName::SwingLateral => &[(0.0, 0.0, 0.0), (0.5, 1.0, 0.0), (1.0, 0.0, 0.0)],
+            // Thesis fig 6.8: 15° toe-down at toe-off, near neutral at heel strike (4.5°), scaled
+            // by the actual toe-off angle. Between, the foot hangs from the shank with a nearly
+            // neutral ankle (Perry: ankle within −10..0° through swing while the knee flexes to
+            // 60°), so it stays steeply toe-down through initial swing, levels after mid-swing
+            // and turns toe-up in terminal swing: for a 49° toe-off, −51° at x = 0.25, −20° at
+            // 0.5, +11° at 0.8 and +15° at heel strike.
+            CurveName::SwingAnkle => {
+                &[(0.0, -15.0, -5.0), (0.25, -15.5, 0.0), (0.5, -6.0, 45.0), (0.8, 3.5, 12.0), (1.0, 4.5, 0.0)]
+            }
+            // Thesis fig 6.10, three segments: the heel keeps rising after toe-off to its peak
+            // in initial swing (Winter: ≈ 0.28 m at x ≈ 0.22), falls through mid-swing and
+            // is still a few centimetres up in terminal swing before it lands.
+            CurveName::SwingHeelHeight => {
+                &[(0.0, 0.20, 0.35), (0.22, 0.28, 0.0), (0.65, 0.10, -0.3), (1.0, 0.0, -0.25)]
+            }
+            // Ceccato et al. 2009: the arm swings opposite to its leg, furthest back at its own
+            // heel strike and furthest forward at the opposite one (widest at double support).
+            CurveName::Shoulder => &[(0.0, -1.0, 0.0), (0.5, 1.0, 0.0), (1.0, -1.0, 0.0)],
+            // Ceccato et al. 2009: the elbow flexes most shortly after the arm is furthest
+            // forward (x ≈ 0.55) and is straightest as the arm swings back (x ≈ 0.05).
+            CurveName::Elbow => &[(0.0, -0.95, -0.6), (0.05, -1.0, 0.0), (0.55, 1.0, 0.0), (1.0, -0.95, -0.6)],
+        };
+        Curve::hermite(self.key(), keys).expect("default curves are valid by construction")
+    }
+}
+
+impl fmt::Display for CurveName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.key())
+    }
+}
+
+/// The design curves of one walk, defaults or overrides.
+#[derive(Clone, Debug)]
+pub struct CurveSet {
+    curves: Vec<Curve>,
+}
+
+impl CurveSet {
+    /// Defaults with the given overrides (control points by curve name).
+    pub fn with_overrides<'a>(
+        overrides: impl IntoIterator<Item = (&'a String, &'a Vec<(f64, f64)>)>,
+    ) -> Result<Self, CurveError> {
+        let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve()).collect();
+        for (name, points) in overrides {
+            if let Some(c) = CurveName::from_key(name) {
+                curves[c as usize] = Curve::from_pairs(name.clone(), points)?;
+            }
+        }
+        Ok(CurveSet { curves })
+    }
+
+    /// The design curve `name`.
+    #[must_use]
+    pub fn get(&self, name: CurveName) -> &Curve {
+        &self.curves[name as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::curve::G1_TOLERANCE;
+
+    #[test]
+    fn defaults_are_valid_smooth_and_cyclic_where_they_should_be() {
+        for c in CurveName::ALL {
+            let curve = c.default_curve();
+            assert!(curve.joins_are_g1(G1_TOLERANCE), "{c}");
+            assert_eq!(curve.x_start(), 0.0, "{c}");
+            assert_eq!(curve.x_end(), 1.0, "{c}");
+            if c.is_cyclic() {
+                assert!((curve.eval(0.0) - curve.eval(1.0)).abs() < 1e-9, "{c}");
+                assert!((curve.slope(0.0) - curve.slope(1.0)).abs() < 1e-6, "{c}");
+            }
+        }
+    }
+
+    #[test]
+    fn extrema_sit_where_the_docs_say() {
+        let argmax = |c: CurveName| {
+            let curve = c.default_curve();
+            (0..=1000).map(|i| i as f64 / 1000.0).max_by(|a, b| curve.eval(*a).total_cmp(&curve.eval(*b))).unwrap()
+        };
+        assert!((argmax(CurveName::PelvisObliquity) - 0.15).abs() < 0.01);
+        assert!(argmax(CurveName::PelvisRotation) < 0.01);
+        assert!((argmax(CurveName::PelvisLateral) - 0.31).abs() < 0.01);
+        assert!((argmax(CurveName::Shoulder) - 0.5).abs() < 0.01);
+        assert!((argmax(CurveName::SwingHeelHeight) - 0.22).abs() < 0.02);
+        let heel_rise = CurveName::HeelRise.default_curve();
+        assert!((heel_rise.eval(1.0) - 80.0).abs() < 1e-9);
+        // Monotone where progress is meant.
+        for c in [CurveName::PelvisForwardDsMs, CurveName::PelvisForwardMsDs, CurveName::SwingForward, CurveName::PelvisVertical] {
+            let curve = c.default_curve();
+            let ys: Vec<f64> = (0..=200).map(|i| curve.eval(i as f64 / 200.0)).collect();
+            assert!(ys.windows(2).all(|w| w[1] >= w[0] - 1e-12), "{c}");
+        }
+    }
+}

@@ -1,0 +1,17 @@
+//! The walk model: everything that moves the body, with no terminal, file or CLI code.
+//!
+//! - [`curve`]: piecewise Bézier curves y(x) and the operations the walk performs on them;
+//! - [`gait_curves`]: the model's named curves and their default designs;
+//! - [`terrain`]: the ground profile;
+//! - [`body`]: skeleton, segment lengths, poses;
+//! - [`ik`]: the analytic two-bone solver;
+//! - [`params`]: typed parameters and how the high-level knobs derive the rest;
+//! - [`walk`]: phases, footfalls, swing planning, pelvis, upper body, frames.
+
+pub mod body;
+pub mod curve;
+pub mod gait_curves;
+pub mod ik;
+pub mod params;
+pub mod terrain;
+pub mod walk;

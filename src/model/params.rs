@@ -1,0 +1,337 @@
+//! The walk's parameters, typed and in the config's units (spec §10).
+//!
+//! Fields that are `Option` are *derived* when absent: the high-level knobs (`walk.speed_mps`,
+//! `walk.sway`, body height) fill them in [`WalkParams::resolve`]. Setting one in the config
+//! overrides the derivation for that field only. The config module maps keys, ranges and
+//! docs onto these fields; the model never sees a key string.
+
+use crate::model::body::{BodyDims, Sex};
+use crate::model::terrain::TerrainKind;
+use std::collections::BTreeMap;
+
+/// `[body]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct BodyParams {
+    pub height_m: f64,
+    pub sex: Sex,
+    pub thigh_m: Option<f64>,
+    pub shank_m: Option<f64>,
+    pub ankle_height_m: Option<f64>,
+    pub foot_length_m: Option<f64>,
+    pub upper_arm_m: Option<f64>,
+    pub forearm_m: Option<f64>,
+    pub hand_m: Option<f64>,
+    pub hip_width_m: Option<f64>,
+    pub shoulder_width_m: Option<f64>,
+    pub trunk_m: Option<f64>,
+}
+
+/// `[walk]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct WalkGroup {
+    pub speed_mps: f64,
+    pub sway: f64,
+    pub stride_m: Option<f64>,
+    pub cadence_spm: Option<f64>,
+    pub step_width_m: Option<f64>,
+}
+
+/// `[pelvis]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct PelvisParams {
+    pub rotation_range_deg: Option<f64>,
+    pub obliquity_range_deg: Option<f64>,
+    pub tilt_range_deg: f64,
+    pub vertical_range_cm: Option<f64>,
+    pub lateral_range_cm: Option<f64>,
+    pub midstance_drop_cm: Option<f64>,
+    pub midstance_offset_cm: f64,
+    pub trunk_lean_deg: f64,
+}
+
+/// `[legs]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct LegParams {
+    pub foot_flat: f64,
+    pub heel_rise: f64,
+    pub toe_off: Option<f64>,
+    pub turnout_deg: f64,
+    pub knee_lift_cm: f64,
+    pub clearance_cm: f64,
+}
+
+/// `[arms]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct ArmParams {
+    pub shoulder_range_deg: Option<f64>,
+    pub elbow_range_deg: Option<f64>,
+    pub elbow_min_flex_deg: f64,
+    pub spread_deg: f64,
+    pub counter_rotation_pct: f64,
+}
+
+/// `[ik]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct IkParams {
+    /// Fraction of full leg reach the planner keeps the stance leg within (knee never locks
+    /// straight, as in human gait where it stays ≥ ~5° flexed).
+    pub reach_margin: f64,
+}
+
+/// `[optimiser]` (the weights of the stance-leg acceleration cost, spec §8).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct OptimiserParams {
+    pub weight_hip: f64,
+    pub weight_knee: f64,
+    pub weight_ankle: f64,
+}
+
+/// `[sim]`.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct SimParams {
+    pub fps: f64,
+    pub cycles: u32,
+}
+
+/// Every parameter of a walk.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct WalkParams {
+    pub body: BodyParams,
+    pub walk: WalkGroup,
+    pub pelvis: PelvisParams,
+    pub legs: LegParams,
+    pub arms: ArmParams,
+    pub ik: IkParams,
+    pub optimiser: OptimiserParams,
+    pub terrain: TerrainKind,
+    pub sim: SimParams,
+    /// Control-point overrides by curve name (`[curves.<name>] points = [[x, y], …]`).
+    pub curves: BTreeMap<String, Vec<(f64, f64)>>,
+}
+
+impl Default for WalkParams {
+    fn default() -> Self {
+        WalkParams {
+            body: BodyParams {
+                height_m: 1.75,
+                sex: Sex::Male,
+                thigh_m: None,
+                shank_m: None,
+                ankle_height_m: None,
+                foot_length_m: None,
+                upper_arm_m: None,
+                forearm_m: None,
+                hand_m: None,
+                hip_width_m: None,
+                shoulder_width_m: None,
+                trunk_m: None,
+            },
+            walk: WalkGroup { speed_mps: 1.3, sway: 1.0, stride_m: None, cadence_spm: None, step_width_m: None },
+            pelvis: PelvisParams {
+                rotation_range_deg: None,
+                obliquity_range_deg: None,
+                tilt_range_deg: 3.0,
+                vertical_range_cm: None,
+                lateral_range_cm: None,
+                midstance_drop_cm: None,
+                midstance_offset_cm: 15.0,
+                trunk_lean_deg: 3.0,
+            },
+            legs: LegParams {
+                foot_flat: 0.12,
+                heel_rise: 0.31,
+                toe_off: None,
+                turnout_deg: 7.0,
+                knee_lift_cm: 0.0,
+                clearance_cm: 1.5,
+            },
+            arms: ArmParams {
+                shoulder_range_deg: None,
+                elbow_range_deg: None,
+                elbow_min_flex_deg: 12.0,
+                spread_deg: 6.0,
+                counter_rotation_pct: 60.0,
+            },
+            ik: IkParams { reach_margin: 0.999 },
+            optimiser: OptimiserParams { weight_hip: 1.0, weight_knee: 1.0, weight_ankle: 1.0 },
+            terrain: TerrainKind::Flat,
+            sim: SimParams { fps: 60.0, cycles: 10 },
+            curves: BTreeMap::new(),
+        }
+    }
+}
+
+/// The parameters with every derived value filled in, in SI units (m, s, rad) where the
+/// model computes with them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Resolved {
+    /// Segment lengths.
+    pub dims: BodyDims,
+    /// Cycle duration T = 120 / cadence (s).
+    pub cycle_s: f64,
+    /// Stride length: heel strike to heel strike of one foot (m).
+    pub stride_m: f64,
+    /// Lateral distance between the two feet's heel lines (m).
+    pub step_width_m: f64,
+    /// Cycle phase at which the loading response ends (foot flat).
+    pub foot_flat: f64,
+    /// Cycle phase at which the heel rises.
+    pub heel_rise: f64,
+    /// Cycle phase of toe-off; stance lasts `toe_off` of the cycle.
+    pub toe_off: f64,
+    /// Peak-to-peak pelvic rotation (rad).
+    pub rotation_range: f64,
+    /// Peak-to-peak pelvic obliquity (rad).
+    pub obliquity_range: f64,
+    /// Peak-to-peak pelvic tilt (rad).
+    pub tilt_range: f64,
+    /// Peak-to-peak vertical pelvis displacement on level ground (m).
+    pub vertical_range: f64,
+    /// Peak-to-peak lateral pelvis displacement (m).
+    pub lateral_range: f64,
+    /// Pelvis height at mid-stance below the standing hip height (m).
+    pub midstance_drop: f64,
+    /// Pelvis ahead of the stance heel at mid-stance (m).
+    pub midstance_offset: f64,
+    /// Forward lean of the trunk (rad).
+    pub trunk_lean: f64,
+    /// Foot turnout (rad).
+    pub turnout: f64,
+    /// Extra heel height in mid-swing (m).
+    pub knee_lift: f64,
+    /// Clearance the swing planner keeps over terrain corners (m).
+    pub clearance: f64,
+    /// Peak-to-peak shoulder flexion (rad).
+    pub shoulder_range: f64,
+    /// Peak-to-peak elbow flexion (rad).
+    pub elbow_range: f64,
+    /// Least elbow flexion (rad).
+    pub elbow_min_flex: f64,
+    /// Arm abduction away from the trunk (rad).
+    pub arm_spread: f64,
+    /// Thorax counter-rotation as a fraction of pelvic rotation.
+    pub counter_rotation: f64,
+    /// Reach fraction kept by the planner.
+    pub reach_margin: f64,
+}
+
+/// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body;
+/// Sekiya & Nagasaki 1998 report 0.0064 for men, nearly constant across speeds. Scaled with
+/// height.
+pub const WALK_RATIO_PER_175: f64 = 0.0064;
+
+impl WalkParams {
+    /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):
+    ///
+    /// - cadence = √(60·v / r) steps/min and stride = 2·r·cadence, with the walk ratio
+    ///   r = 0.0064·H/1.75 (Sekiya & Nagasaki): 1.3 m/s gives 110 steps/min and 1.41 m;
+    ///   a set stride or cadence takes the other from v = stride·cadence/120;
+    /// - step width 0.10 m at 1.3 m/s, 2 cm narrower per 1 m/s faster (≥ 0.05 m);
+    /// - toe-off at 0.62 of the cycle at 1.3 m/s, 0.04 earlier per 1 m/s faster (double
+    ///   support shrinks with speed);
+    /// - pelvis after Orendurff et al. 2004's speed trends: vertical range 1.9 cm at 0.7 m/s
+    ///   rising 1.5 cm per m/s (2.8 cm at 1.3 m/s: the hip joint's range in this leg
+    ///   geometry; Orendurff's centre-of-mass range, 2.7 + 2.33 cm per m/s, would flex the
+    ///   loading knee to 35°, twice the 15–20° of normal gait), lateral range 6.9 cm at
+    ///   0.7 m/s falling 3.44 cm per m/s (×sway);
+    ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
+    /// - mid-stance drop 1.5 cm at 1.3 m/s, 2 cm more per m/s faster, so long fast steps still
+    ///   reach (the thesis lowers the pelvis with speed too);
+    /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
+    #[must_use]
+    pub fn resolve(&self) -> Resolved {
+        let v = self.walk.speed_mps;
+        let b = &self.body;
+        let mut dims = BodyDims::from_height(b.height_m, b.sex);
+        let set = |slot: &mut f64, value: Option<f64>| {
+            if let Some(x) = value {
+                *slot = x;
+            }
+        };
+        set(&mut dims.thigh, b.thigh_m);
+        set(&mut dims.shank, b.shank_m);
+        set(&mut dims.ankle_height, b.ankle_height_m);
+        set(&mut dims.foot_length, b.foot_length_m);
+        set(&mut dims.upper_arm, b.upper_arm_m);
+        set(&mut dims.forearm, b.forearm_m);
+        set(&mut dims.hand, b.hand_m);
+        set(&mut dims.hip_width, b.hip_width_m);
+        set(&mut dims.shoulder_width, b.shoulder_width_m);
+        set(&mut dims.trunk, b.trunk_m);
+
+        let ratio = WALK_RATIO_PER_175 * b.height_m / 1.75;
+        let (stride_m, cadence) = match (self.walk.stride_m, self.walk.cadence_spm) {
+            (Some(s), Some(c)) => (s, c),
+            (Some(s), None) => (s, 120.0 * v / s),
+            (None, Some(c)) => (120.0 * v / c, c),
+            (None, None) => {
+                let c = (60.0 * v / ratio).sqrt();
+                (2.0 * ratio * c, c)
+            }
+        };
+        let sway = self.walk.sway;
+        let fast = v - 1.3;
+        let above_slow = (v - 0.7).max(0.0);
+        let deg = f64::to_radians;
+        let p = &self.pelvis;
+        let a = &self.arms;
+        Resolved {
+            cycle_s: 120.0 / cadence,
+            stride_m,
+            step_width_m: self.walk.step_width_m.unwrap_or((0.10 - 0.02 * fast).max(0.05)),
+            foot_flat: self.legs.foot_flat,
+            heel_rise: self.legs.heel_rise,
+            toe_off: self.legs.toe_off.unwrap_or((0.62 - 0.04 * fast).clamp(0.55, 0.70)),
+            rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
+            obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
+            tilt_range: deg(p.tilt_range_deg),
+            vertical_range: p.vertical_range_cm.unwrap_or(1.9 + 1.5 * (v - 0.7)).max(0.0) / 100.0,
+            lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
+            midstance_drop: p.midstance_drop_cm.unwrap_or((1.5 + 2.0 * fast).max(0.5)) / 100.0,
+            midstance_offset: p.midstance_offset_cm / 100.0,
+            trunk_lean: deg(p.trunk_lean_deg),
+            turnout: deg(self.legs.turnout_deg),
+            knee_lift: self.legs.knee_lift_cm / 100.0,
+            clearance: self.legs.clearance_cm / 100.0,
+            shoulder_range: deg(a.shoulder_range_deg.unwrap_or((25.0 + 30.0 * fast).max(4.0))),
+            elbow_range: deg(a.elbow_range_deg.unwrap_or((15.0 + 20.0 * fast).max(2.0))),
+            elbow_min_flex: deg(a.elbow_min_flex_deg),
+            arm_spread: deg(a.spread_deg),
+            counter_rotation: a.counter_rotation_pct / 100.0,
+            reach_margin: self.ik.reach_margin,
+            dims,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_speed_gives_normal_adult_figures() {
+        let r = WalkParams::default().resolve();
+        let cadence = 120.0 / r.cycle_s;
+        assert!((cadence - 110.4).abs() < 0.5, "{cadence}");
+        assert!((r.stride_m - 1.413).abs() < 0.01, "{}", r.stride_m);
+        assert!((r.stride_m / r.cycle_s - 1.3).abs() < 1e-9);
+        assert!((r.toe_off - 0.62).abs() < 1e-12);
+    }
+
+    #[test]
+    fn set_stride_keeps_speed() {
+        let mut p = WalkParams::default();
+        p.walk.stride_m = Some(1.6);
+        let r = p.resolve();
+        assert!((r.stride_m / r.cycle_s - 1.3).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,333 @@
+//! The terrain profile h(x): a 1-D height field the walker crosses along +x (spec §1).
+//!
+//! Every kind is stored the same way, as heights at the ends of segments of equal width
+//! [6.2.1], except stairs, whose vertical risers a height field of finite segments would
+//! smear into ramps: stairs keep their exact step function.
+
+use std::f64::consts::PI;
+
+/// What the ground looks like.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TerrainKind {
+    /// Level ground at height 0.
+    Flat,
+    /// A flight of stairs starting at `start_x_m`.
+    Stairs {
+        /// Height of one step (m).
+        rise_m: f64,
+        /// Depth of one tread (m).
+        run_m: f64,
+        /// Number of steps; after the last one the ground is level again.
+        count: u32,
+        /// Going up (true) or down.
+        up: bool,
+        /// Where the first riser stands (m along x).
+        start_x_m: f64,
+    },
+    /// A constant grade starting at `start_x_m`.
+    Slope {
+        /// Grade in per cent (rise over run × 100); negative goes downhill.
+        grade_pct: f64,
+        /// Where the slope begins (m along x).
+        start_x_m: f64,
+    },
+    /// Midpoint-displacement noise [6.2.1, Martz].
+    Random {
+        /// Seed of the portable generator: the same seed gives the same ground everywhere.
+        seed: u64,
+        /// Roughness exponent H ∈ [0, 1]: the displacement range shrinks by 2^(−H) a level.
+        roughness: f64,
+        /// Range of the first displacement (m).
+        amplitude_m: f64,
+        /// Width of one final segment (m).
+        segment_m: f64,
+        /// Length of ground generated (m); beyond it the last height continues.
+        length_m: f64,
+        /// Level ground before the rough part starts (m), so the walk starts on the flat.
+        start_x_m: f64,
+    },
+}
+
+/// A terrain profile, ready to be queried.
+#[derive(Clone, Debug)]
+pub struct Terrain {
+    kind: TerrainKind,
+    /// Heights at x = start + i·segment for the random kind.
+    samples: Vec<f64>,
+}
+
+/// SplitMix64: a tiny, well-studied generator whose output is defined by integer arithmetic
+/// alone, so a seed gives the same terrain on every platform and compiler (no `thread_rng`,
+/// no dependence on a crate's algorithm choice across versions).
+#[derive(Clone, Debug)]
+pub struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// A generator started from `seed`.
+    #[must_use]
+    pub fn new(seed: u64) -> Self {
+        SplitMix64(seed)
+    }
+
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A uniform number in [−1, 1), from the top 53 bits.
+    pub fn next_signed_unit(&mut self) -> f64 {
+        let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        2.0 * unit - 1.0
+    }
+}
+
+impl Terrain {
+    /// Builds the profile; the random kind is generated here, once.
+    #[must_use]
+    pub fn new(kind: TerrainKind) -> Self {
+        let samples = match &kind {
+            TerrainKind::Random { seed, roughness, amplitude_m, segment_m, length_m, .. } => {
+                midpoint_displacement(*seed, *roughness, *amplitude_m, *segment_m, *length_m)
+            }
+            _ => Vec::new(),
+        };
+        Terrain { kind, samples }
+    }
+
+    /// Level ground.
+    #[must_use]
+    pub fn flat() -> Self {
+        Terrain::new(TerrainKind::Flat)
+    }
+
+    /// The kind and its settings.
+    #[must_use]
+    pub fn kind(&self) -> &TerrainKind {
+        &self.kind
+    }
+
+    /// Ground height at x (m).
+    #[must_use]
+    pub fn height(&self, x: f64) -> f64 {
+        match &self.kind {
+            TerrainKind::Flat => 0.0,
+            TerrainKind::Stairs { rise_m, run_m, count, up, start_x_m } => {
+                if x < *start_x_m {
+                    return 0.0;
+                }
+                let steps = (((x - start_x_m) / run_m).floor() + 1.0).min(*count as f64);
+                let sign = if *up { 1.0 } else { -1.0 };
+                sign * steps * rise_m
+            }
+            TerrainKind::Slope { grade_pct, start_x_m } => (x - start_x_m).max(0.0) * grade_pct / 100.0,
+            TerrainKind::Random { segment_m, start_x_m, .. } => {
+                let u = (x - start_x_m) / segment_m;
+                if u <= 0.0 {
+                    return self.samples[0];
+                }
+                let i = u.floor() as usize;
+                if i + 1 >= self.samples.len() {
+                    return self.samples[self.samples.len() - 1];
+                }
+                let f = u - i as f64;
+                self.samples[i] * (1.0 - f) + self.samples[i + 1] * f
+            }
+        }
+    }
+
+    /// The x positions where the ground has a corner (stair nosings and riser feet, slope
+    /// start, random-terrain vertices) between `x0` and `x1`: the places a foot can catch on.
+    #[must_use]
+    pub fn corners_between(&self, x0: f64, x1: f64) -> Vec<f64> {
+        let (lo, hi) = (x0.min(x1), x0.max(x1));
+        match &self.kind {
+            TerrainKind::Flat => Vec::new(),
+            TerrainKind::Stairs { run_m, count, start_x_m, .. } => (0..*count)
+                .map(|i| start_x_m + i as f64 * run_m)
+                .filter(|x| (lo..=hi).contains(x))
+                .collect(),
+            TerrainKind::Slope { start_x_m, .. } => {
+                if (lo..=hi).contains(start_x_m) {
+                    vec![*start_x_m]
+                } else {
+                    Vec::new()
+                }
+            }
+            TerrainKind::Random { segment_m, start_x_m, .. } => {
+                let first = ((lo - start_x_m) / segment_m).ceil().max(0.0) as usize;
+                let last = ((hi - start_x_m) / segment_m).floor().max(-1.0);
+                if last < 0.0 {
+                    return Vec::new();
+                }
+                (first..=last as usize).map(|i| start_x_m + i as f64 * segment_m).collect()
+            }
+        }
+    }
+
+    /// Highest ground between `x0` and `x1` (corners included).
+    #[must_use]
+    pub fn max_height_between(&self, x0: f64, x1: f64) -> f64 {
+        let mut h = self.height(x0).max(self.height(x1));
+        for c in self.corners_between(x0, x1) {
+            // A riser has two heights at one x: take the upper one.
+            h = h.max(self.height(c)).max(self.height(c - 1e-9));
+        }
+        h
+    }
+
+    /// Slope angle of the ground line between the points under `x_heel` and `x_toe` (rad,
+    /// positive uphill along +x).
+    #[must_use]
+    pub fn angle_between(&self, x_heel: f64, x_toe: f64) -> f64 {
+        let dx = x_toe - x_heel;
+        if dx.abs() < 1e-9 {
+            return 0.0;
+        }
+        ((self.height(x_toe) - self.height(x_heel)) / dx).atan()
+    }
+
+    /// The angle between a foot (heel → toe, in the sagittal plane) and the ground under it,
+    /// by the dot product of the two directions [6.3.2]; positive when the toe points above
+    /// the ground line.
+    #[must_use]
+    pub fn foot_angle(&self, heel_x: f64, heel_y: f64, toe_x: f64, toe_y: f64) -> f64 {
+        let foot = glam::DVec2::new(toe_x - heel_x, toe_y - heel_y);
+        let ground = glam::DVec2::new(toe_x - heel_x, self.height(toe_x) - self.height(heel_x));
+        let cos = (foot.dot(ground) / (foot.length() * ground.length()).max(1e-12)).clamp(-1.0, 1.0);
+        let unsigned = cos.acos();
+        if ground.perp_dot(foot) >= 0.0 { unsigned } else { -unsigned }
+    }
+
+    /// The x of a place where a foot from `heel_x` to `heel_x + foot_m` lies on one flat
+    /// piece of ground, as near to `heel_x` as possible: on stairs a foot must not straddle a
+    /// nosing. Other kinds return `heel_x` unchanged.
+    #[must_use]
+    pub fn settle_footfall(&self, heel_x: f64, foot_m: f64, margin_m: f64) -> f64 {
+        let TerrainKind::Stairs { run_m, count, start_x_m, .. } = &self.kind else {
+            return heel_x;
+        };
+        let last_nosing = start_x_m + (*count as f64 - 1.0) * run_m;
+        let crosses = |x: f64| {
+            self.corners_between(x - margin_m, x + foot_m + margin_m)
+                .iter()
+                .any(|&c| c > x - margin_m && c < x + foot_m + margin_m)
+        };
+        if !crosses(heel_x) {
+            return heel_x;
+        }
+        // Candidates: the heel just past a nosing, or the toe just short of the next one.
+        let mut best = heel_x;
+        let mut best_d = f64::INFINITY;
+        for i in -1..=(*count as i64) {
+            let nosing = start_x_m + i as f64 * run_m;
+            for cand in [nosing + margin_m, nosing - foot_m - margin_m] {
+                if cand > last_nosing + margin_m && i < *count as i64 - 1 {
+                    continue;
+                }
+                if !crosses(cand) && (cand - heel_x).abs() < best_d {
+                    best = cand;
+                    best_d = (cand - heel_x).abs();
+                }
+            }
+        }
+        best
+    }
+}
+
+/// 1-D midpoint displacement: heights at `2^k + 1` points spaced `segment_m`, enough to
+/// cover `length_m`. The ends start at 0; each level displaces every midpoint by a uniform
+/// value in ±range, and range shrinks by 2^(−H) per level.
+fn midpoint_displacement(seed: u64, roughness: f64, amplitude_m: f64, segment_m: f64, length_m: f64) -> Vec<f64> {
+    let needed = (length_m / segment_m).ceil().max(1.0) as usize;
+    let mut size = 1usize;
+    while size < needed {
+        size *= 2;
+    }
+    let mut h = vec![0.0; size + 1];
+    let mut rng = SplitMix64::new(seed);
+    let mut range = amplitude_m;
+    let mut step = size;
+    let decay = 2f64.powf(-roughness);
+    while step > 1 {
+        let half = step / 2;
+        let mut i = half;
+        while i < size {
+            h[i] = 0.5 * (h[i - half] + h[i + half]) + range * rng.next_signed_unit();
+            i += step;
+        }
+        range *= decay;
+        step = half;
+    }
+    // Start at ground level so the walk's first steps are on height 0 like every other kind.
+    let h0 = h[0];
+    h.iter().map(|v| v - h0).collect()
+}
+
+/// Grade in per cent from an angle in degrees.
+#[must_use]
+pub fn grade_pct_from_deg(angle_deg: f64) -> f64 {
+    (angle_deg * PI / 180.0).tan() * 100.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stairs_step_up_at_each_riser() {
+        let t = Terrain::new(TerrainKind::Stairs { rise_m: 0.17, run_m: 0.3, count: 3, up: true, start_x_m: 1.0 });
+        assert_eq!(t.height(0.99), 0.0);
+        assert!((t.height(1.0) - 0.17).abs() < 1e-12);
+        assert!((t.height(1.31) - 0.34).abs() < 1e-12);
+        assert!((t.height(9.0) - 0.51).abs() < 1e-12);
+        assert!((t.max_height_between(0.9, 1.1) - 0.17).abs() < 1e-12);
+    }
+
+    #[test]
+    fn slope_grade_and_foot_angle() {
+        let t = Terrain::new(TerrainKind::Slope { grade_pct: 10.0, start_x_m: 0.0 });
+        assert!((t.height(2.0) - 0.2).abs() < 1e-12);
+        assert!((t.angle_between(1.0, 1.2) - 0.1f64.atan()).abs() < 1e-12);
+        // A horizontal foot on a 10 % uphill points into the ground.
+        let a = t.foot_angle(1.0, 0.1, 1.2, 0.1);
+        assert!((a + 0.1f64.atan()).abs() < 1e-9, "{a}");
+    }
+
+    #[test]
+    fn random_terrain_is_reproducible_and_seed_dependent() {
+        let kind = |seed| TerrainKind::Random {
+            seed,
+            roughness: 0.6,
+            amplitude_m: 0.08,
+            segment_m: 0.25,
+            length_m: 60.0,
+            start_x_m: 2.0,
+        };
+        let a = Terrain::new(kind(7));
+        let b = Terrain::new(kind(7));
+        let c = Terrain::new(kind(8));
+        let xs: Vec<f64> = (0..400).map(|i| i as f64 * 0.13).collect();
+        let ha: Vec<f64> = xs.iter().map(|&x| a.height(x)).collect();
+        let hb: Vec<f64> = xs.iter().map(|&x| b.height(x)).collect();
+        let hc: Vec<f64> = xs.iter().map(|&x| c.height(x)).collect();
+        assert_eq!(ha, hb);
+        assert_ne!(ha, hc);
+        assert_eq!(a.height(0.0), 0.0);
+        assert!(ha.iter().any(|h| h.abs() > 0.005));
+        // Portable generator: the first outputs of SplitMix64 seeded with 0 are published.
+        let mut rng = SplitMix64::new(0);
+        assert_eq!(rng.next_u64(), 0xE220_A839_7B1D_CDAF);
+    }
+
+    #[test]
+    fn footfalls_settle_onto_one_tread() {
+        let t = Terrain::new(TerrainKind::Stairs { rise_m: 0.17, run_m: 0.3, count: 5, up: true, start_x_m: 1.0 });
+        let x = t.settle_footfall(1.2, 0.26, 0.015);
+        assert!(t.corners_between(x - 0.015, x + 0.275).is_empty(), "{x}");
+        assert_eq!(t.settle_footfall(0.5, 0.26, 0.015), 0.5);
+    }
+}

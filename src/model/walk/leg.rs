@@ -1,0 +1,165 @@
+//! One leg through its four phases [6.3.2] and the swing plan made at toe-off.
+
+use crate::model::body::Side;
+use crate::model::curve::Curve;
+use glam::{DQuat, DVec3};
+
+/// The four leg phases (spec §3), each holding a different contact point fixed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LegPhase {
+    /// Heel on the ground where it struck; the foot rolls down flat.
+    LoadingResponse,
+    /// Foot flat; the ankle is held.
+    Midstance,
+    /// Terminal stance and pre-swing: the heel lifts, the toe tip is held.
+    HeelRise,
+    /// The foot flies to the next footfall.
+    Swing,
+}
+
+impl LegPhase {
+    /// Short lower-case name, as printed in tables.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            LegPhase::LoadingResponse => "loading",
+            LegPhase::Midstance => "midstance",
+            LegPhase::HeelRise => "heel_rise",
+            LegPhase::Swing => "swing",
+        }
+    }
+
+    /// Whether the foot carries weight.
+    #[must_use]
+    pub fn is_stance(self) -> bool {
+        self != LegPhase::Swing
+    }
+
+    /// The phase that follows.
+    #[must_use]
+    pub fn next(self) -> LegPhase {
+        match self {
+            LegPhase::LoadingResponse => LegPhase::Midstance,
+            LegPhase::Midstance => LegPhase::HeelRise,
+            LegPhase::HeelRise => LegPhase::Swing,
+            LegPhase::Swing => LegPhase::LoadingResponse,
+        }
+    }
+}
+
+/// Where a foot is set down.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Footfall {
+    /// Step number: 0 is the first right footfall, odd numbers are left.
+    pub step: i64,
+    /// Which foot.
+    pub side: Side,
+    /// Heel contact point on the ground (m, world).
+    pub heel: DVec3,
+    /// Slope of the ground under the foot, heel to toe (rad, + uphill).
+    pub ground_angle: f64,
+    /// Foot direction about the vertical (rad); turnout turns the toes outward.
+    pub yaw: f64,
+    /// Where the step would have landed on unbroken ground (x, m); stairs move the footfall
+    /// to one tread, and the next step is planned from here so the error does not add up.
+    pub nominal_x: f64,
+}
+
+/// The swing, planned once at toe-off: the curves the heel and foot will follow.
+#[derive(Clone, Debug)]
+pub struct SwingPlan {
+    /// Heel at toe-off.
+    pub heel_from: DVec3,
+    /// Ground height under the toe-off foot: the heel-height curve's zero.
+    pub ground_from: f64,
+    /// The footfall the swing lands on.
+    pub to: Footfall,
+    /// Foot pitch at toe-off (rad).
+    pub pitch_from: f64,
+    /// Toe bend at toe-off (rad); returns to neutral over the first fifth of the swing.
+    pub toe_bend_from: f64,
+    /// Heel progress 0→1 toward the footfall.
+    pub forward: Curve,
+    /// Weight toward the hip line.
+    pub lateral: Curve,
+    /// Foot pitch vs horizontal (deg), scaled to the toe-off angle and corrected uphill.
+    pub ankle_deg: Curve,
+    /// Heel height above `ground_from` (m): scaled, end-shifted and raised where needed.
+    pub heel_height: Curve,
+    /// Heel-height raises the 50-sample simulation made (count).
+    pub raises: u32,
+}
+
+/// What a leg does at one instant: the IK input.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LegTarget {
+    /// Ankle joint target (m, world).
+    pub ankle: DVec3,
+    /// Foot pitch vs horizontal (rad, toe up +).
+    pub pitch: f64,
+    /// Toe bend relative to the foot (rad, toes up +).
+    pub toe_bend: f64,
+    /// Foot yaw (rad).
+    pub yaw: f64,
+    /// Extra heel rise the stance leg needed to reach the hip (rad), 0 mostly.
+    pub extra_heel_rise: f64,
+}
+
+/// The solved leg.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LegPose {
+    /// Hip joint (m, world).
+    pub hip: DVec3,
+    /// Knee joint.
+    pub knee: DVec3,
+    /// Ankle joint, as the IK placed it.
+    pub ankle: DVec3,
+    /// Unit swivel direction of the knee about the hip→ankle axis.
+    pub swivel: DVec3,
+    /// Foot world rotation.
+    pub foot: DQuat,
+    /// Toe world rotation.
+    pub toe: DQuat,
+    /// Heel contact point.
+    pub heel: DVec3,
+    /// Toe joint (ball of the foot).
+    pub ball: DVec3,
+    /// Toe tip contact point.
+    pub toe_tip: DVec3,
+    /// Whether the IK reached its target.
+    pub reached: bool,
+    /// The target it was solved for.
+    pub target: LegTarget,
+}
+
+/// A leg's state between updates.
+#[derive(Clone, Debug)]
+pub struct LegState {
+    /// Which leg.
+    pub side: Side,
+    /// Current phase.
+    pub phase: LegPhase,
+    /// Master phase of this leg's last heel strike; the leg's own phase is master − this.
+    pub cycle_start: f64,
+    /// The footfall it stands on (during swing: the one it left).
+    pub footfall: Footfall,
+    /// The contact point held in the current stance phase: heel (loading), ankle
+    /// (midstance), toe joint (heel rise).
+    pub anchor: DVec3,
+    /// Foot–ground angle at heel strike (rad), rolled to zero through loading response.
+    pub strike_angle: f64,
+    /// Heel-rise curve scale frozen at the phase's start: (stride / 1.8 m)².
+    pub heel_rise_scale: f64,
+    /// The current swing's plan.
+    pub swing: Option<SwingPlan>,
+    /// Counts phase changes, so one phase instance can be told from the next.
+    pub phase_serial: u64,
+    /// The last solved pose.
+    pub pose: LegPose,
+}
+
+/// Foot world rotation from yaw (about y) and pitch (about the foot's z, toe up +).
+#[must_use]
+pub fn foot_rotation(yaw: f64, pitch: f64) -> DQuat {
+    DQuat::from_rotation_y(yaw) * DQuat::from_rotation_z(pitch)
+}

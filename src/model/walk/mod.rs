@@ -1,0 +1,946 @@
+//! The procedural walk (spec §3, §5, §7, §9): time and phases, footfalls, swing planning,
+//! the pelvis trajectory, the legs by IK, the upper body.
+//!
+//! Time runs as a *master phase* φ in gait cycles: the right leg's phase is frac(φ), the
+//! left leg's frac(φ − ½). One update advances φ by at most [`MAX_UPDATE_CYCLES`]; a longer
+//! frame is split. When an update crosses a leg's phase boundary, the leg is first evaluated
+//! exactly at the boundary (finishing the old phase), then enters the new one: no phase end
+//! is skipped, however long the frame.
+
+pub mod frame;
+pub mod leg;
+pub mod pelvis;
+pub mod upper;
+
+use crate::model::body::{Bone, Pose, Side};
+use crate::model::curve::{Curve, LiveCurve};
+use crate::model::gait_curves::{CurveName, CurveSet};
+use crate::model::ik::solve_two_bone;
+use crate::model::params::{Resolved, WalkParams};
+use crate::model::terrain::Terrain;
+use glam::{DQuat, DVec3};
+use leg::{foot_rotation, Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
+use pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose, TrajectoryCurves};
+use std::fmt;
+use upper::{ArmHang, UpperBody};
+
+/// Largest phase advance of one update (cycles) [6.3.3].
+pub const MAX_UPDATE_CYCLES: f64 = 0.04;
+/// Samples of the swing simulation at toe-off [6.3.2].
+pub const SWING_SAMPLES: usize = 50;
+/// Stride the heel-rise curve is designed for (m) [fig 6.5].
+pub const HEEL_RISE_DESIGN_STRIDE_M: f64 = 1.8;
+/// Toe-off plantarflexion the swing-ankle curve is designed for (deg) [fig 6.8].
+pub const SWING_ANKLE_DESIGN_DEG: f64 = 15.0;
+/// Heel height at toe-off the swing heel-height curve is designed for (m) [fig 6.10].
+pub const SWING_HEEL_DESIGN_M: f64 = 0.20;
+/// Least foot–ground angle at heel strike (rad): the heel, not the toe, lands first.
+pub const MIN_STRIKE_ANGLE: f64 = 0.035;
+/// Steepest heel rise the stance leg may take to reach (rad).
+pub const MAX_HEEL_RISE: f64 = 1.45;
+
+/// A walk that cannot be built.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModelError(pub String);
+
+impl fmt::Display for ModelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ModelError {}
+
+/// The cycle curves played live, in real units (rad or m).
+#[derive(Clone, Debug)]
+struct LiveCurves {
+    obliquity: LiveCurve,
+    rotation: LiveCurve,
+    tilt: LiveCurve,
+    lateral: LiveCurve,
+    shoulder: [LiveCurve; 2],
+    elbow: [LiveCurve; 2],
+}
+
+/// Real-unit cycle curves for a parameter set.
+fn cycle_targets(design: &CurveSet, r: &Resolved) -> [Curve; 6] {
+    let half = |name: CurveName, range: f64| design.get(name).scaled(1.0, 0.5 * range);
+    let mut elbow = half(CurveName::Elbow, r.elbow_range);
+    elbow.offset_y(r.elbow_min_flex + 0.5 * r.elbow_range);
+    [
+        half(CurveName::PelvisObliquity, r.obliquity_range),
+        half(CurveName::PelvisRotation, r.rotation_range),
+        half(CurveName::PelvisTilt, r.tilt_range),
+        half(CurveName::PelvisLateral, r.lateral_range),
+        half(CurveName::Shoulder, r.shoulder_range),
+        elbow,
+    ]
+}
+
+/// The decision made for one step at toe-off, kept for the optimiser panel and reports.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepPlan {
+    /// Step number of the footfall being swung to.
+    pub step: i64,
+    /// The swinging side.
+    pub side: Side,
+    /// Master phase of the toe-off.
+    pub phase: f64,
+    /// Chosen pelvis x at the coming double support.
+    pub double_support_x: f64,
+    /// Pelvis height at that double support after the terrain rule and reach guard.
+    pub double_support_y: f64,
+    /// How much the reach guard lowered the pelvis (m).
+    pub reach_guard_drop: f64,
+    /// Heel-height raises made by the swing simulation.
+    pub swing_raises: u32,
+}
+
+/// A walking body.
+#[derive(Clone, Debug)]
+pub struct Walker {
+    params: WalkParams,
+    r: Resolved,
+    terrain: Terrain,
+    design: CurveSet,
+    traj: TrajectoryCurves,
+    pending_traj: Option<TrajectoryCurves>,
+    live: LiveCurves,
+    plan: PelvisPlan,
+    legs: [LegState; 2],
+    phase: f64,
+    time_s: f64,
+    footfalls: Vec<Footfall>,
+    step_plans: Vec<StepPlan>,
+    reach_failures: u64,
+    pelvis: PelvisPose,
+    arm_hang: ArmHang,
+    upper: UpperBody,
+    pose: Pose,
+}
+
+impl Walker {
+    /// A walker standing in the double support right after a right heel strike, in the
+    /// steady-state pose of the walk (the left foot already in heel rise behind), at x = 0.
+    pub fn new(params: &WalkParams) -> Result<Self, ModelError> {
+        let r = params.resolve();
+        let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+        let terrain = Terrain::new(params.terrain.clone());
+        if !(r.toe_off > 0.5) {
+            return Err(ModelError(format!(
+                "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
+                r.toe_off
+            )));
+        }
+        if !(0.0 < r.foot_flat && r.foot_flat < r.heel_rise && r.heel_rise < r.toe_off && r.toe_off < 1.0) {
+            return Err(ModelError(format!(
+                "leg phases must come in order: 0 < foot flat ({:.3}) < heel rise ({:.3}) < toe-off ({:.3}) < 1",
+                r.foot_flat, r.heel_rise, r.toe_off
+            )));
+        }
+        let traj = trajectory_curves(&design);
+        let targets = cycle_targets(&design, &r);
+        let [obl, rot, tilt, lat, sh, el] = targets;
+        let live = LiveCurves {
+            obliquity: LiveCurve::new(obl),
+            rotation: LiveCurve::new(rot),
+            tilt: LiveCurve::new(tilt),
+            lateral: LiveCurve::new(lat),
+            shoulder: [LiveCurve::new(sh.clone()), LiveCurve::new(sh)],
+            elbow: [LiveCurve::new(el.clone()), LiveCurve::new(el)],
+        };
+        let dims = r.dims.clone();
+        let step = 0.5 * r.stride_m;
+        let make_footfall = |step_no: i64, side: Side, nominal_x: f64| {
+            let yaw = -side.sign() * r.turnout;
+            let foot_x = dims.foot_length * yaw.cos();
+            let x = terrain.settle_footfall(nominal_x, foot_x, r.clearance);
+            Footfall {
+                step: step_no,
+                side,
+                heel: DVec3::new(x, terrain.height(x), side.sign() * 0.5 * r.step_width_m),
+                ground_angle: terrain.angle_between(x, x + foot_x),
+                yaw,
+                nominal_x,
+            }
+        };
+        let right = make_footfall(0, Side::Right, 0.0);
+        let left = make_footfall(-1, Side::Left, -step);
+        let heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+        let toe_off_angle = design.get(CurveName::HeelRise).eval(1.0) * heel_rise_scale;
+        let strike_angle = (design.get(CurveName::SwingAnkle).eval(1.0) * toe_off_angle / SWING_ANKLE_DESIGN_DEG)
+            .to_radians()
+            .max(MIN_STRIKE_ANGLE);
+        let placeholder = LegPose {
+            hip: DVec3::ZERO,
+            knee: DVec3::ZERO,
+            ankle: DVec3::ZERO,
+            swivel: DVec3::X,
+            foot: DQuat::IDENTITY,
+            toe: DQuat::IDENTITY,
+            heel: DVec3::ZERO,
+            ball: DVec3::ZERO,
+            toe_tip: DVec3::ZERO,
+            reached: true,
+            target: LegTarget { ankle: DVec3::ZERO, pitch: 0.0, toe_bend: 0.0, yaw: 0.0, extra_heel_rise: 0.0 },
+        };
+        let left_ball = left.heel + foot_rotation(left.yaw, left.ground_angle) * (dims.ball_local() - dims.heel_local());
+        let legs = [
+            LegState {
+                side: Side::Right,
+                phase: LegPhase::LoadingResponse,
+                cycle_start: 0.0,
+                footfall: right,
+                anchor: right.heel,
+                strike_angle,
+                heel_rise_scale,
+                swing: None,
+                phase_serial: 0,
+                pose: placeholder,
+            },
+            LegState {
+                side: Side::Left,
+                phase: LegPhase::HeelRise,
+                cycle_start: -0.5,
+                footfall: left,
+                anchor: left_ball,
+                strike_angle,
+                heel_rise_scale,
+                swing: None,
+                phase_serial: 0,
+                pose: placeholder,
+            },
+        ];
+        let arm_hang = ArmHang::new(&dims, r.arm_spread, r.elbow_min_flex);
+        let mut walker = Walker {
+            params: params.clone(),
+            pose: Pose::rest(&dims),
+            r,
+            terrain,
+            design,
+            traj,
+            pending_traj: None,
+            live,
+            plan: PelvisPlan::default(),
+            legs,
+            phase: 0.0,
+            time_s: 0.0,
+            footfalls: vec![left, right],
+            step_plans: Vec::new(),
+            reach_failures: 0,
+            pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
+            arm_hang,
+            upper: UpperBody::default(),
+        };
+        // Keys around the start: the left mid-stance behind, this double support, the right
+        // mid-stance ahead.
+        let ms_left = walker.midstance_key(&left, -0.5);
+        let ms_right = walker.midstance_key(&right, 0.0);
+        walker.plan.push(ms_left);
+        let ds = walker.double_support_key(&left, &right, 0.0, &ms_left, &ms_right);
+        walker.plan.push(ds);
+        walker.plan.push(ms_right);
+        walker.guard_stance_reach(Side::Right, 0.0, None);
+        walker.evaluate_now();
+        Ok(walker)
+    }
+
+    /// Advances the walk by `dt_s` seconds, in updates of at most [`MAX_UPDATE_CYCLES`].
+    pub fn advance(&mut self, dt_s: f64) {
+        if !(dt_s > 0.0) || !dt_s.is_finite() {
+            return;
+        }
+        let total = dt_s / self.r.cycle_s;
+        let n = (total / MAX_UPDATE_CYCLES).ceil().max(1.0) as usize;
+        let d = total / n as f64;
+        for _ in 0..n {
+            self.update_to(self.phase + d);
+        }
+        self.time_s += dt_s;
+    }
+
+    /// Moves the walk to master phase `target` (≤ one update ahead), handling every phase
+    /// boundary crossed on the way in time order.
+    fn update_to(&mut self, target: f64) {
+        loop {
+            // The earliest boundary either leg crosses before `target`.
+            let next = Side::BOTH
+                .iter()
+                .map(|&s| (self.boundary_phase(s), s))
+                .filter(|(b, _)| *b <= target)
+                .min_by(|a, b| a.0.total_cmp(&b.0));
+            let Some((at, side)) = next else { break };
+            let at = at.max(self.phase);
+            self.cross_key_boundaries(at);
+            let pelvis = self.pelvis_at(at);
+            let finished = self.evaluate_leg(side, at, &pelvis);
+            self.legs[side.index()].pose = finished;
+            self.enter_next_phase(side, at);
+        }
+        self.cross_key_boundaries(target);
+        if target.floor() > self.phase.floor() {
+            self.wrap_cycle_curves(Side::Right);
+        }
+        if (target - 0.5).floor() > (self.phase - 0.5).floor() {
+            self.wrap_cycle_curves(Side::Left);
+        }
+        self.phase = target;
+        self.plan.forget_before(target - 1.0);
+        self.evaluate_now();
+    }
+
+    /// Swaps in edited trajectory curves when the pelvis passes a key, so the segment being
+    /// played never changes shape under it.
+    fn cross_key_boundaries(&mut self, to: f64) {
+        if self.pending_traj.is_some() && self.plan.keys().any(|k| k.phase > self.phase && k.phase <= to) {
+            self.traj = self.pending_traj.take().expect("checked");
+        }
+    }
+
+    fn wrap_cycle_curves(&mut self, side: Side) {
+        let i = side.index();
+        self.live.shoulder[i].wrap();
+        self.live.elbow[i].wrap();
+        if side == Side::Right {
+            for c in [&mut self.live.obliquity, &mut self.live.rotation, &mut self.live.tilt, &mut self.live.lateral] {
+                c.wrap();
+            }
+        }
+    }
+
+    /// Master phase at which `side`'s current phase ends.
+    fn boundary_phase(&self, side: Side) -> f64 {
+        let leg = &self.legs[side.index()];
+        let end = match leg.phase {
+            LegPhase::LoadingResponse => self.r.foot_flat,
+            LegPhase::Midstance => self.r.heel_rise,
+            LegPhase::HeelRise => self.r.toe_off,
+            LegPhase::Swing => 1.0,
+        };
+        leg.cycle_start + end
+    }
+
+    /// Evaluates everything at the current phase and builds the pose.
+    fn evaluate_now(&mut self) {
+        let pelvis = self.pelvis_at(self.phase);
+        for side in Side::BOTH {
+            let pose = self.evaluate_leg(side, self.phase, &pelvis);
+            if !pose.reached {
+                self.reach_failures += 1;
+            }
+            self.legs[side.index()].pose = pose;
+        }
+        self.pelvis = pelvis;
+        let p_right = self.phase.rem_euclid(1.0);
+        let arm_phase = [p_right, (self.phase - 0.5).rem_euclid(1.0)];
+        let shoulder = [self.live.shoulder[0].eval(arm_phase[0]), self.live.shoulder[1].eval(arm_phase[1])];
+        let elbow = [self.live.elbow[0].eval(arm_phase[0]), self.live.elbow[1].eval(arm_phase[1])];
+        self.upper = UpperBody::solve(&self.r, &self.arm_hang, &pelvis, shoulder, elbow);
+        self.build_pose();
+    }
+
+    /// The pelvis at master phase `phase` under the current plan.
+    #[must_use]
+    pub fn pelvis_at(&self, phase: f64) -> PelvisPose {
+        self.pelvis_with_plan(&self.plan, phase)
+    }
+
+    /// The pelvis at `phase` under a given plan (the optimiser tries candidate plans).
+    #[must_use]
+    pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
+        let (x, y) = plan.position(phase, &self.traj);
+        let p = phase.rem_euclid(1.0);
+        let z = self.live.lateral.eval(p);
+        PelvisPose::new(
+            DVec3::new(x, y, z),
+            self.live.rotation.eval(p),
+            self.live.obliquity.eval(p),
+            self.live.tilt.eval(p),
+            0.5 * self.r.dims.hip_width,
+        )
+    }
+
+    /// The leg's IK target at master phase `phase`, from its state and the hip position.
+    #[must_use]
+    pub fn leg_target(&self, side: Side, phase: f64, hip: DVec3) -> LegTarget {
+        let leg = &self.legs[side.index()];
+        let r = &self.r;
+        let dims = &r.dims;
+        let q = phase - leg.cycle_start;
+        let ff = &leg.footfall;
+        match leg.phase {
+            LegPhase::LoadingResponse => {
+                let s = (q / r.foot_flat).clamp(0.0, 1.0);
+                let pitch = ff.ground_angle + leg.strike_angle * (1.0 - s);
+                let ankle = leg.anchor - foot_rotation(ff.yaw, pitch) * dims.heel_local();
+                LegTarget { ankle, pitch, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
+            }
+            LegPhase::Midstance => {
+                LegTarget { ankle: leg.anchor, pitch: ff.ground_angle, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
+            }
+            LegPhase::HeelRise => {
+                let s = ((q - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0);
+                let curve_angle =
+                    (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
+                let ankle_at = |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
+                let limit = r.reach_margin * dims.leg_reach();
+                let mut angle = curve_angle;
+                if hip.distance(ankle_at(angle)) > limit && hip.distance(ankle_at(MAX_HEEL_RISE)) <= limit {
+                    // The hip has moved past what the curve's heel rise lets the leg reach:
+                    // roll further over the toes, just enough (bisection on a monotone distance).
+                    let (mut lo, mut hi) = (angle, MAX_HEEL_RISE);
+                    for _ in 0..40 {
+                        let mid = 0.5 * (lo + hi);
+                        if hip.distance(ankle_at(mid)) > limit {
+                            lo = mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                    angle = hi;
+                }
+                LegTarget {
+                    ankle: ankle_at(angle),
+                    pitch: ff.ground_angle - angle,
+                    toe_bend: angle,
+                    yaw: ff.yaw,
+                    extra_heel_rise: angle - curve_angle,
+                }
+            }
+            LegPhase::Swing => {
+                let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
+                let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
+                swing_target(plan, s, side, r)
+            }
+        }
+    }
+
+    /// Solves `side`'s leg at `phase` with the given pelvis.
+    #[must_use]
+    pub fn evaluate_leg(&self, side: Side, phase: f64, pelvis: &PelvisPose) -> LegPose {
+        let hip = pelvis.hip(side.sign());
+        let target = self.leg_target(side, phase, hip);
+        solve_leg(&self.r, hip, target)
+    }
+
+    /// Enters the phase after the current one at master phase `at` (the boundary).
+    fn enter_next_phase(&mut self, side: Side, at: f64) {
+        let i = side.index();
+        let dims = self.r.dims.clone();
+        let pose = self.legs[i].pose;
+        let next = self.legs[i].phase.next();
+        match next {
+            LegPhase::Midstance => self.legs[i].anchor = pose.target.ankle,
+            LegPhase::HeelRise => {
+                let leg = &mut self.legs[i];
+                leg.anchor = pose.target.ankle + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * dims.ball_local();
+                leg.heel_rise_scale = (self.r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+            }
+            LegPhase::Swing => self.plan_step(side, at, &pose),
+            LegPhase::LoadingResponse => {
+                let leg = &mut self.legs[i];
+                let plan = leg.swing.take().expect("a landing leg was swinging");
+                leg.footfall = plan.to;
+                leg.anchor = plan.to.heel;
+                leg.strike_angle = pose.target.pitch - plan.to.ground_angle;
+                leg.cycle_start += 1.0;
+            }
+        }
+        let leg = &mut self.legs[i];
+        leg.phase = next;
+        leg.phase_serial += 1;
+    }
+
+    /// The pelvis key at mid-stance over `footfall`, whose heel strike is at master phase
+    /// `strike_phase`: ahead of the heel by the offset parameter, at the mid-stance height
+    /// above the ground under the foot (so the stance knee's extension is the same on any
+    /// terrain, [6.3.3, fig 6.14]).
+    fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
+        let r = &self.r;
+        PelvisKey {
+            phase: strike_phase + 0.5 * r.toe_off,
+            x: footfall.heel.x + r.midstance_offset,
+            y: footfall.heel.y + r.dims.standing_hip_height() - r.midstance_drop,
+            kind: KeyKind::MidStance,
+        }
+    }
+
+    /// The pelvis key at mid double support after `leading` strikes at `strike_phase`, with
+    /// `trailing` behind. Height: the vertical range below the mid-stance height over the
+    /// *lower* of the two footfalls — stepping down lowers the minimum so the leading leg
+    /// reaches, stepping up keeps it and the knee bends [fig 6.14].
+    fn double_support_key(
+        &self,
+        trailing: &Footfall,
+        leading: &Footfall,
+        strike_phase: f64,
+        ms_before: &PelvisKey,
+        ms_after: &PelvisKey,
+    ) -> PelvisKey {
+        let r = &self.r;
+        let ground = trailing.heel.y.min(leading.heel.y);
+        PelvisKey {
+            phase: strike_phase + 0.5 * (r.toe_off - 0.5),
+            x: self.choose_double_support_x(ms_before, ms_after),
+            y: ground + r.dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
+            kind: KeyKind::DoubleSupport,
+        }
+    }
+
+    /// Where the pelvis is at mid double support: the one choice per step that the
+    /// pelvis-acceleration optimisation (spec §8) makes. Until it is wired in, the fixed rule:
+    /// halfway between the mid-stance positions around it, so the two half-steps are equally
+    /// long.
+    #[must_use]
+    pub fn choose_double_support_x(&self, ms_before: &PelvisKey, ms_after: &PelvisKey) -> f64 {
+        0.5 * (ms_before.x + ms_after.x)
+    }
+
+    /// Lowers the newest pelvis keys where `side`'s leg, striking at `strike_phase`, could not
+    /// reach its ground contact during loading response and midstance. The terrain rule
+    /// keeps the knee's extension, but a long stride or a big drop can still put the heel out
+    /// of reach; the planner drops the pelvis rather than let the heel slide. Returns the
+    /// drop of the double-support key (m).
+    fn guard_stance_reach(&mut self, side: Side, strike_phase: f64, swing: Option<&SwingPlan>) -> f64 {
+        let r = self.r.clone();
+        let limit = r.reach_margin * r.dims.leg_reach();
+        let footfall = self.legs[side.index()].footfall;
+        let strike_angle = self.legs[side.index()].strike_angle;
+        // Only the two newest keys may move: the segment ending at any older key may be
+        // playing already, and moving its key would make the pelvis jump.
+        let ds_phase = self.plan.last_of(KeyKind::DoubleSupport).map_or(f64::NAN, |k| k.phase);
+        let ms_phase = self.plan.last_of(KeyKind::MidStance).map_or(f64::NAN, |k| k.phase);
+        // From the end of the swing (when a plan is given: the knee is nearly straight there
+        // too) through loading response and midstance.
+        let window_start = if swing.is_some() { strike_phase - 0.03 } else { strike_phase };
+        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        let mut dropped = 0.0;
+        for _ in 0..6 {
+            let mut worst: Option<(f64, KeyKind)> = None;
+            for i in 0..=14 {
+                let phase = window_start + (window_end - window_start) * i as f64 / 14.0;
+                let ankle = match swing {
+                    Some(plan) if phase < strike_phase => {
+                        let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
+                        swing_target(plan, s, side, &r).ankle
+                    }
+                    _ => {
+                        let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
+                        let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
+                        footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
+                    }
+                };
+                let hip = self.pelvis_at(phase).hip(side.sign());
+                let d = hip - ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                let allowed =
+                    if horizontal < limit { ankle.y + (limit * limit - horizontal * horizontal).sqrt() } else { ankle.y };
+                let deficit = hip.y - allowed;
+                if deficit <= 0.0 {
+                    continue;
+                }
+                // Lower whichever movable key moves the pelvis most at this instant.
+                let (a, b, u) = self.plan.bracket(phase);
+                let v = self.traj.vertical.eval(u);
+                let mut choice: Option<(KeyKind, f64)> = None;
+                for (key, weight) in [(a, 1.0 - v), (b, v)] {
+                    let movable = key.phase == ds_phase || key.phase == ms_phase;
+                    if movable && choice.is_none_or(|(_, w)| weight > w) {
+                        choice = Some((key.kind, weight));
+                    }
+                }
+                let Some((kind, weight)) = choice else { continue };
+                let need = deficit / weight.max(0.25) + 1e-4;
+                if worst.is_none_or(|(w, _)| need > w) {
+                    worst = Some((need, kind));
+                }
+            }
+            let Some((need, kind)) = worst else { break };
+            if let Some(key) = self.plan.last_of_mut(kind) {
+                key.y -= need;
+                if kind == KeyKind::DoubleSupport {
+                    dropped += need;
+                }
+            }
+        }
+        dropped
+    }
+
+    /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
+    /// swing [6.3.2].
+    fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
+        let r = self.r.clone();
+        let dims = &r.dims;
+        let i = side.index();
+        let other = self.legs[side.other().index()].footfall;
+        // Footfall: a step on from the previous footfall's nominal place, settled on the ground.
+        let nominal_x = other.nominal_x + 0.5 * r.stride_m;
+        let yaw = -side.sign() * r.turnout;
+        let foot_x = dims.foot_length * yaw.cos();
+        let x = self.terrain.settle_footfall(nominal_x, foot_x, r.clearance);
+        let to = Footfall {
+            step: other.step + 1,
+            side,
+            heel: DVec3::new(x, self.terrain.height(x), side.sign() * 0.5 * r.step_width_m),
+            ground_angle: self.terrain.angle_between(x, x + foot_x),
+            yaw,
+            nominal_x,
+        };
+        let strike_phase = self.legs[i].cycle_start + 1.0;
+
+        // Pelvis keys: the coming double support, then this leg's mid-stance.
+        let ms_before = *self.plan.last_of(KeyKind::MidStance).expect("a mid-stance key is planned");
+        let ms_after = self.midstance_key(&to, strike_phase);
+        let ds = self.double_support_key(&other, &to, strike_phase, &ms_before, &ms_after);
+        self.plan.push(ds);
+        self.plan.push(ms_after);
+
+        // Swing planning step 1: the foot pitch curve, scaled to the toe-off angle and turned
+        // up at its end where the footfall slopes up so the toe does not land first.
+        let pitch_from = toe_off_pose.target.pitch;
+        let mut ankle_deg = self.design.get(CurveName::SwingAnkle).clone();
+        let toe_off_plantar_deg = (-pitch_from).to_degrees().max(0.0);
+        ankle_deg.scale(1.0, (toe_off_plantar_deg / SWING_ANKLE_DESIGN_DEG).min(6.0));
+        let strike = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+        if strike < MIN_STRIKE_ANGLE {
+            ankle_deg.shift_last_two((MIN_STRIKE_ANGLE - strike).to_degrees());
+        }
+        let strike_angle = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+
+        // Step 2: the heel-height curve, scaled to the heel's height at toe-off, its end
+        // moved by the terrain step, its middle raised by the knee-lift parameter.
+        let ground_from = self.legs[i].footfall.heel.y;
+        let heel_from = toe_off_pose.heel;
+        let mut heel_height = self.design.get(CurveName::SwingHeelHeight).clone();
+        heel_height.scale(1.0, ((heel_from.y - ground_from) / SWING_HEEL_DESIGN_M).max(0.05));
+        heel_height.shift_end(to.heel.y - ground_from - heel_height.eval(1.0));
+        if r.knee_lift > 0.0 {
+            heel_height.raise_at(0.5, r.knee_lift);
+        }
+        let mut plan = SwingPlan {
+            heel_from,
+            ground_from,
+            to,
+            pitch_from,
+            toe_bend_from: toe_off_pose.target.toe_bend,
+            forward: self.design.get(CurveName::SwingForward).clone(),
+            lateral: self.design.get(CurveName::SwingLateral).clone(),
+            ankle_deg,
+            heel_height,
+            raises: 0,
+        };
+        // The end of the swing and the stance phases this plan sets up must reach: lower the
+        // pelvis where they would not.
+        let saved_footfall = self.legs[i].footfall;
+        let saved_strike = self.legs[i].strike_angle;
+        self.legs[i].footfall = to;
+        self.legs[i].strike_angle = strike_angle;
+        let guard_drop = self.guard_stance_reach(side, strike_phase, Some(&plan));
+        self.legs[i].footfall = saved_footfall;
+        self.legs[i].strike_angle = saved_strike;
+        // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
+        // foot would touch the ground.
+        self.simulate_swing(side, at, &mut plan);
+        self.step_plans.push(StepPlan {
+            step: to.step,
+            side,
+            phase: at,
+            double_support_x: ds.x,
+            double_support_y: self.plan.last_of(KeyKind::DoubleSupport).map_or(ds.y, |k| k.y),
+            reach_guard_drop: guard_drop,
+            swing_raises: plan.raises,
+        });
+        self.footfalls.push(to);
+        self.legs[i].swing = Some(plan);
+    }
+
+    /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
+    /// the plan, IK; raise the heel-height curve where the ankle is beyond reach, then where
+    /// heel, toe tip or sole would come within the clearance of the ground. Up to four passes.
+    fn simulate_swing(&self, side: Side, toe_off_phase: f64, plan: &mut SwingPlan) {
+        let r = &self.r;
+        let dims = &r.dims;
+        let limit = r.reach_margin * dims.leg_reach();
+        let span = 1.0 - r.toe_off;
+        for _pass in 0..4 {
+            let mut raised = false;
+            let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
+            for i in 0..SWING_SAMPLES {
+                let s = (i as f64 + 0.5) / SWING_SAMPLES as f64;
+                let pelvis = self.pelvis_at(toe_off_phase + s * span);
+                let hip = pelvis.hip(side.sign());
+                let target = swing_target(plan, s, side, r);
+                // Out of reach: lift the heel until the ankle is back inside the sphere.
+                let d = hip - target.ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                if horizontal < limit {
+                    let lowest_ok = hip.y - (limit * limit - horizontal * horizontal).sqrt();
+                    if target.ankle.y < lowest_ok - 1e-6 && s < 0.97 {
+                        plan.heel_height.raise_at(s, lowest_ok - target.ankle.y + 1e-4);
+                        plan.raises += 1;
+                        raised = true;
+                        continue;
+                    }
+                }
+                // Too close to the ground: clearance ramps in over the first and out over the
+                // last 15 % of the swing, where the foot leaves and meets the ground.
+                let pose = solve_leg(r, hip, target);
+                let needed = r.clearance * (s / 0.15).min((1.0 - s) / 0.15).min(1.0);
+                let ground_heel = self.terrain.height(pose.heel.x);
+                let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
+                prev_toe_x = pose.toe_tip.x;
+                let mut deficit = (ground_heel + needed - pose.heel.y).max(ground_toe + needed - pose.toe_tip.y);
+                for corner in self.terrain.corners_between(pose.heel.x, pose.toe_tip.x) {
+                    let top = self.terrain.height(corner).max(self.terrain.height(corner - 1e-9));
+                    let f = (corner - pose.heel.x) / (pose.toe_tip.x - pose.heel.x).max(1e-9);
+                    let sole_y = pose.heel.y + (pose.toe_tip.y - pose.heel.y) * f;
+                    deficit = deficit.max(top + needed - sole_y);
+                }
+                if deficit > 1e-5 && s < 0.985 {
+                    plan.heel_height.raise_at(s, deficit + 1e-4);
+                    plan.raises += 1;
+                    raised = true;
+                }
+            }
+            if !raised {
+                break;
+            }
+        }
+    }
+
+    /// Builds the skeleton pose from the pelvis, legs and upper body.
+    fn build_pose(&mut self) {
+        let dims = &self.r.dims;
+        let pose = &mut self.pose;
+        pose.position[Bone::Pelvis.index()] = self.pelvis.position;
+        pose.rotation[Bone::Pelvis.index()] = self.pelvis.rotation;
+        for side in Side::BOTH {
+            let leg = &self.legs[side.index()].pose;
+            let hinge = (leg.ankle - leg.hip).cross(leg.swivel).normalize_or(DVec3::Z);
+            pose.place(dims, Bone::thigh(side), bone_frame(leg.knee - leg.hip, hinge));
+            pose.position[Bone::thigh(side).index()] = leg.hip;
+            pose.place(dims, Bone::shin(side), bone_frame(leg.ankle - leg.knee, hinge));
+            pose.place(dims, Bone::foot(side), leg.foot);
+            pose.place(dims, Bone::toe(side), leg.toe);
+        }
+        self.upper.apply(dims, pose);
+    }
+
+    /// Applies new parameters during the walk without a jump: cycle curves change from the
+    /// segment after the one playing, trajectory curves at the next pelvis key, everything
+    /// planned per step (footfalls, swing, pelvis keys) from the next toe-off. Body and
+    /// terrain cannot change under a walking body: returns false, and the caller restarts.
+    pub fn set_params(&mut self, params: &WalkParams) -> Result<bool, ModelError> {
+        if params.body != self.params.body || params.terrain != self.params.terrain {
+            return Ok(false);
+        }
+        let r = params.resolve();
+        let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+        let [obl, rot, tilt, lat, sh, el] = cycle_targets(&design, &r);
+        let p_right = self.phase.rem_euclid(1.0);
+        let p_left = (self.phase - 0.5).rem_euclid(1.0);
+        self.live.obliquity.change_to(obl, p_right);
+        self.live.rotation.change_to(rot, p_right);
+        self.live.tilt.change_to(tilt, p_right);
+        self.live.lateral.change_to(lat, p_right);
+        self.live.shoulder[0].change_to(sh.clone(), p_right);
+        self.live.shoulder[1].change_to(sh, p_left);
+        self.live.elbow[0].change_to(el.clone(), p_right);
+        self.live.elbow[1].change_to(el, p_left);
+        let traj = trajectory_curves(&design);
+        if traj.forward_ds_ms != self.traj.forward_ds_ms
+            || traj.forward_ms_ds != self.traj.forward_ms_ds
+            || traj.vertical != self.traj.vertical
+        {
+            self.pending_traj = Some(traj);
+        }
+        // Phase boundaries must not jump behind a leg that is inside the phase they end.
+        let mut r = r;
+        for leg in &self.legs {
+            let q = self.phase - leg.cycle_start;
+            match leg.phase {
+                LegPhase::LoadingResponse => r.foot_flat = r.foot_flat.max(q),
+                LegPhase::Midstance => r.heel_rise = r.heel_rise.max(q),
+                LegPhase::HeelRise => {
+                    r.toe_off = r.toe_off.max(q);
+                    r.heel_rise = self.r.heel_rise;
+                }
+                LegPhase::Swing => r.toe_off = self.r.toe_off,
+            }
+        }
+        self.arm_hang = ArmHang::new(&r.dims, r.arm_spread, r.elbow_min_flex);
+        self.design = design;
+        self.r = r;
+        self.params = params.clone();
+        Ok(true)
+    }
+
+    /// The parameters in force.
+    #[must_use]
+    pub fn params(&self) -> &WalkParams {
+        &self.params
+    }
+
+    /// Derived values in force.
+    #[must_use]
+    pub fn resolved(&self) -> &Resolved {
+        &self.r
+    }
+
+    /// The terrain walked on.
+    #[must_use]
+    pub fn terrain(&self) -> &Terrain {
+        &self.terrain
+    }
+
+    /// The current skeleton pose.
+    #[must_use]
+    pub fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    /// Master phase (cycles since the start).
+    #[must_use]
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
+
+    /// Seconds since the start.
+    #[must_use]
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
+    /// A leg's state.
+    #[must_use]
+    pub fn leg(&self, side: Side) -> &LegState {
+        &self.legs[side.index()]
+    }
+
+    /// The current pelvis.
+    #[must_use]
+    pub fn pelvis(&self) -> &PelvisPose {
+        &self.pelvis
+    }
+
+    /// The pelvis plan.
+    #[must_use]
+    pub fn pelvis_plan(&self) -> &PelvisPlan {
+        &self.plan
+    }
+
+    /// Every footfall so far, in order (the first is the left one behind the start).
+    #[must_use]
+    pub fn footfalls(&self) -> &[Footfall] {
+        &self.footfalls
+    }
+
+    /// Every step's planning decision so far.
+    #[must_use]
+    pub fn step_plans(&self) -> &[StepPlan] {
+        &self.step_plans
+    }
+
+    /// IK solves that had to clamp an unreachable target, counted over every evaluated frame.
+    #[must_use]
+    pub fn reach_failures(&self) -> u64 {
+        self.reach_failures
+    }
+
+    /// The design curves in force.
+    #[must_use]
+    pub fn design_curves(&self) -> &CurveSet {
+        &self.design
+    }
+
+    /// A cycle curve being played, in real units (for plots): pelvis obliquity, rotation,
+    /// tilt (rad) and lateral (m); shoulder and elbow of the right arm (rad).
+    #[must_use]
+    pub fn live_curve(&self, name: CurveName) -> Option<&Curve> {
+        let live = &self.live;
+        Some(match name {
+            CurveName::PelvisObliquity => live.obliquity.playing(),
+            CurveName::PelvisRotation => live.rotation.playing(),
+            CurveName::PelvisTilt => live.tilt.playing(),
+            CurveName::PelvisLateral => live.lateral.playing(),
+            CurveName::Shoulder => live.shoulder[0].playing(),
+            CurveName::Elbow => live.elbow[0].playing(),
+            _ => return None,
+        })
+    }
+
+    /// The upper body as solved this frame.
+    #[must_use]
+    pub fn upper_body(&self) -> &UpperBody {
+        &self.upper
+    }
+}
+
+fn trajectory_curves(design: &CurveSet) -> TrajectoryCurves {
+    TrajectoryCurves {
+        forward_ds_ms: design.get(CurveName::PelvisForwardDsMs).clone(),
+        forward_ms_ds: design.get(CurveName::PelvisForwardMsDs).clone(),
+        vertical: design.get(CurveName::PelvisVertical).clone(),
+    }
+}
+
+/// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
+/// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
+/// line toward the hip line and back, up on the heel-height curve; foot pitched by the ankle
+/// curve; toes back to neutral over the first fifth of the swing.
+#[must_use]
+pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTarget {
+    let from = plan.heel_from;
+    let to = plan.to.heel;
+    let progress = plan.forward.eval(s);
+    let x = from.x + (to.x - from.x) * progress;
+    let line_z = from.z + (to.z - from.z) * progress;
+    let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
+    let z = line_z + (hip_line_z - line_z) * plan.lateral.eval(s);
+    let y = plan.ground_from + plan.heel_height.eval(s);
+    let pitch = plan.ankle_deg.eval(s).to_radians();
+    let heel = DVec3::new(x, y, z);
+    let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
+    // The toes return to neutral over the first fifth of the swing, but never point below
+    // the horizontal while the foot is still pitched down: a toe tip dipping back into the
+    // ground it just left is what a literal linear return would draw.
+    let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
+    LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// IK for one leg toward `target`, with the knee toward the walking direction turned by the
+/// foot's yaw (the reference vector), then the foot and toes set to the target's angles.
+#[must_use]
+pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
+    let dims = &r.dims;
+    let reference = DQuat::from_rotation_y(target.yaw) * DVec3::X;
+    let ik = solve_two_bone(hip, target.ankle, dims.thigh, dims.shank, reference);
+    let foot = foot_rotation(target.yaw, target.pitch);
+    let toe = foot * DQuat::from_rotation_z(target.toe_bend);
+    let heel = ik.end + foot * dims.heel_local();
+    let ball = ik.end + foot * dims.ball_local();
+    let toe_tip = ball + toe * DVec3::new(dims.toe_length(), 0.0, 0.0);
+    LegPose {
+        hip,
+        knee: ik.middle,
+        ankle: ik.end,
+        swivel: ik.swivel,
+        foot,
+        toe,
+        heel,
+        ball,
+        toe_tip,
+        reached: ik.reached,
+        target,
+    }
+}
+
+/// World rotation of a bone pointing along `along` (its rest direction is −y) with its local
+/// z on `hinge`.
+#[must_use]
+pub fn bone_frame(along: DVec3, hinge: DVec3) -> DQuat {
+    let y = (-along).normalize();
+    let z = (hinge - y * y.dot(hinge)).normalize();
+    let x = y.cross(z);
+    DQuat::from_mat3(&glam::DMat3::from_cols(x, y, z))
+}

@@ -1,0 +1,189 @@
+//! The pelvis trajectory [6.3.3]: forward and vertical position between key instants, and
+//! the three rotations and the lateral sway from cycle curves.
+//!
+//! Key instants alternate: mid double support (DS, the vertical minimum, fastest forward)
+//! and mid-stance (MS, the vertical maximum, slowest forward). Between two keys the forward
+//! position follows the DS→MS or MS→DS curve scaled to the distance between the keys, and
+//! the height follows the vertical shape between the keys' heights. Keys are placed in
+//! *cycle phase* (master phase, in cycles), not seconds, so a cadence change mid-walk
+//! stretches time without moving any planned key.
+
+use crate::model::curve::Curve;
+use glam::{DQuat, DVec3};
+use std::collections::VecDeque;
+
+/// Which instant a key marks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeyKind {
+    /// Mid double support: the choice the optimisation makes.
+    DoubleSupport,
+    /// Mid-stance: fixed relative to the stance foot.
+    MidStance,
+}
+
+/// A planned pelvis position at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PelvisKey {
+    /// Master cycle phase of the instant (cycles since the walk began).
+    pub phase: f64,
+    /// Forward position of the pelvis (hip-joint centre), m.
+    pub x: f64,
+    /// Height of the pelvis, m.
+    pub y: f64,
+    /// DS or MS.
+    pub kind: KeyKind,
+}
+
+/// The planned keys, oldest first.
+#[derive(Clone, Debug, Default)]
+pub struct PelvisPlan {
+    keys: VecDeque<PelvisKey>,
+}
+
+/// Keys kept behind the current phase (for the optimiser's look-back and plots).
+const KEYS_KEPT_BEHIND: usize = 4;
+
+impl PelvisPlan {
+    /// Appends a key; keys must come in phase order.
+    pub fn push(&mut self, key: PelvisKey) {
+        debug_assert!(self.keys.back().is_none_or(|k| k.phase < key.phase));
+        self.keys.push_back(key);
+    }
+
+    /// Drops keys long past `phase`.
+    pub fn forget_before(&mut self, phase: f64) {
+        while self.keys.len() > KEYS_KEPT_BEHIND + 2 && self.keys[KEYS_KEPT_BEHIND].phase < phase {
+            self.keys.pop_front();
+        }
+    }
+
+    /// All keys, oldest first.
+    pub fn keys(&self) -> impl Iterator<Item = &PelvisKey> {
+        self.keys.iter()
+    }
+
+    /// The last key.
+    #[must_use]
+    pub fn last(&self) -> Option<&PelvisKey> {
+        self.keys.back()
+    }
+
+    /// The newest key of `kind`.
+    #[must_use]
+    pub fn last_of(&self, kind: KeyKind) -> Option<&PelvisKey> {
+        self.keys.iter().rev().find(|k| k.kind == kind)
+    }
+
+    /// Mutable access to the newest key of `kind` (the reach guard lowers a DS key).
+    pub fn last_of_mut(&mut self, kind: KeyKind) -> Option<&mut PelvisKey> {
+        self.keys.iter_mut().rev().find(|k| k.kind == kind)
+    }
+
+    /// The pair of keys around `phase` and where `phase` lies between them (0..1). Before the
+    /// first or after the last key the nearest pair is used, clamped.
+    #[must_use]
+    pub fn bracket(&self, phase: f64) -> (PelvisKey, PelvisKey, f64) {
+        let n = self.keys.len();
+        debug_assert!(n >= 2, "a pelvis plan needs two keys");
+        let i = (1..n).find(|&i| phase < self.keys[i].phase).unwrap_or(n - 1);
+        let (a, b) = (self.keys[i - 1], self.keys[i]);
+        let u = ((phase - a.phase) / (b.phase - a.phase)).clamp(0.0, 1.0);
+        (a, b, u)
+    }
+
+    /// Forward position and height at `phase`.
+    #[must_use]
+    pub fn position(&self, phase: f64, curves: &TrajectoryCurves) -> (f64, f64) {
+        let (a, b, u) = self.bracket(phase);
+        let forward = match a.kind {
+            KeyKind::DoubleSupport => &curves.forward_ds_ms,
+            KeyKind::MidStance => &curves.forward_ms_ds,
+        };
+        let x = a.x + (b.x - a.x) * forward.eval(u);
+        let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
+        (x, y)
+    }
+}
+
+/// The design curves the trajectory is built from.
+#[derive(Clone, Debug)]
+pub struct TrajectoryCurves {
+    /// Forward progress from mid double support to mid-stance.
+    pub forward_ds_ms: Curve,
+    /// Forward progress from mid-stance to mid double support.
+    pub forward_ms_ds: Curve,
+    /// Height progress between two keys.
+    pub vertical: Curve,
+}
+
+/// The pelvis at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PelvisPose {
+    /// Hip-joint centre, world (m).
+    pub position: DVec3,
+    /// World rotation: rotation about y, then obliquity about x, then tilt about z.
+    pub rotation: DQuat,
+    /// Pelvic rotation, rad, positive when the right hip is forward.
+    pub rotation_angle: f64,
+    /// Pelvic obliquity, rad, positive when the right hip is higher.
+    pub obliquity: f64,
+    /// Pelvic tilt, rad, positive anterior.
+    pub tilt: f64,
+    /// Half the distance between the hip joints (m).
+    pub half_hip_width: f64,
+}
+
+impl PelvisPose {
+    /// Builds the pose from its three clinical angles.
+    #[must_use]
+    pub fn new(position: DVec3, rotation_angle: f64, obliquity: f64, tilt: f64, half_hip_width: f64) -> Self {
+        // +y turns the right hip (+z) forward; −obliquity about x lifts +z; −tilt about z
+        // tips the front (+x) down (anterior).
+        let rotation =
+            DQuat::from_rotation_y(rotation_angle) * DQuat::from_rotation_x(-obliquity) * DQuat::from_rotation_z(-tilt);
+        PelvisPose { position, rotation, rotation_angle, obliquity, tilt, half_hip_width }
+    }
+
+    /// World position of the hip joint of the side with sign `side_sign` (+1 right, −1 left).
+    #[must_use]
+    pub fn hip(&self, side_sign: f64) -> DVec3 {
+        self.position + self.rotation * DVec3::new(0.0, 0.0, side_sign * self.half_hip_width)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::gait_curves::CurveName;
+
+    fn curves() -> TrajectoryCurves {
+        TrajectoryCurves {
+            forward_ds_ms: CurveName::PelvisForwardDsMs.default_curve(),
+            forward_ms_ds: CurveName::PelvisForwardMsDs.default_curve(),
+            vertical: CurveName::PelvisVertical.default_curve(),
+        }
+    }
+
+    #[test]
+    fn passes_through_keys_and_is_fastest_at_double_support() {
+        let mut plan = PelvisPlan::default();
+        plan.push(PelvisKey { phase: 0.0, x: 0.0, y: 0.90, kind: KeyKind::MidStance });
+        plan.push(PelvisKey { phase: 0.25, x: 0.35, y: 0.86, kind: KeyKind::DoubleSupport });
+        plan.push(PelvisKey { phase: 0.5, x: 0.70, y: 0.90, kind: KeyKind::MidStance });
+        let c = curves();
+        assert_eq!(plan.position(0.25, &c), (0.35, 0.86));
+        let speed = |p: f64| (plan.position(p + 1e-4, &c).0 - plan.position(p - 1e-4, &c).0) / 2e-4;
+        assert!(speed(0.25) > speed(0.01) * 1.2, "{} {}", speed(0.25), speed(0.01));
+        let (_, y_mid) = plan.position(0.125, &c);
+        assert!(y_mid > 0.86 && y_mid < 0.90);
+    }
+
+    #[test]
+    fn obliquity_lifts_the_right_hip() {
+        let p = PelvisPose::new(DVec3::new(0.0, 1.0, 0.0), 0.1, 0.05, 0.0, 0.1);
+        assert!(p.hip(1.0).y > p.hip(-1.0).y);
+        assert!(p.hip(1.0).x > p.hip(-1.0).x, "positive rotation brings the right hip forward");
+        let tilted = PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.2, 0.1);
+        assert!((tilted.rotation * DVec3::X).y < 0.0, "anterior tilt tips the front down");
+    }
+}
