@@ -1,12 +1,17 @@
 use gaitlab::analysis;
-use gaitlab::model::params::WalkParams;
+use gaitlab::config::presets;
 fn main() {
-    let p = WalkParams::default();
-    let run = analysis::run(&p, 3.0, 60.0).unwrap();
-    for f in run.frames.iter().skip(65).step_by(3).take(24) {
-        let l = &f.legs[0];
-        println!("{:5.3} {:9} pel=({:6.3},{:5.3}) hip={:6.1} knee={:5.1} ank={:6.1} | hipP=({:5.3},{:5.3}) knee=({:5.3},{:5.3}) ankle=({:5.3},{:5.3}) heel=({:5.3},{:5.3}) toe=({:5.3},{:5.3}) {}",
-          l.phase, l.leg_phase.name(), f.pelvis.x, f.pelvis.y, l.hip_flex_deg, l.knee_flex_deg, l.ankle_dorsi_deg,
-          l.hip.x, l.hip.y, l.knee.x, l.knee.y, l.ankle.x, l.ankle.y, l.heel.x, l.heel.y, l.toe.x, l.toe.y, l.reached);
+    for (name, _) in presets::PRESETS {
+        let p = presets::params(name).unwrap().unwrap();
+        let run = analysis::run(&p, 20.0, 60.0).unwrap();
+        let c = analysis::checks(&run.frames);
+        let cs = analysis::cycle_summaries(&run.frames);
+        let s = &cs[cs.len() / 2];
+        let drop: f64 = run.step_plans.iter().map(|s| s.reach_guard_drop).fold(0.0, f64::max);
+        println!("{name:12} skate {:.3}mm {:?} pen {:.3}mm {:?} reach {} nf {} | stance {:.1} ds {:.1} vert {:.1} lat {:.1} knee st {:.0} sw {:.0} hip {:.0}/{:.0} ank {:.0}/{:.0} clear {:.1} guard {:.3} raises {}",
+            c.foot_skate_mm, c.worst_skate, c.terrain_penetration_mm, c.worst_penetration, c.reach_failures, c.non_finite_values,
+            s.stance_pct[0], s.double_support_pct, s.pelvis_vertical_cm, s.pelvis_lateral_cm, s.knee_max_stance_deg[0], s.knee_max_swing_deg[0],
+            s.hip_flex_deg[0].0, s.hip_flex_deg[0].1, s.ankle_deg[0].0, s.ankle_deg[0].1, s.min_toe_clearance_cm[0], drop,
+            run.step_plans.iter().map(|s| s.swing_raises).max().unwrap_or(0));
     }
 }

@@ -8,4 +8,7 @@
 #![warn(missing_docs)]
 
 pub mod analysis;
+pub mod cli;
+pub mod config;
 pub mod model;
+pub mod output;

@@ -1,1 +1,6 @@
-fn main(){}
+use clap::Parser;
+
+fn main() {
+    let cli = gaitlab::cli::Cli::parse();
+    std::process::exit(gaitlab::cli::run(cli));
+}

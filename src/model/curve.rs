@@ -282,7 +282,7 @@ impl Curve {
     /// collinear). The curve's own first and last points stay put. In a middle segment the
     /// raise is split between the two sides by where x lies: the further left x is, the more
     /// the left end takes. The split is then scaled so that y(x) rises by exactly `delta`,
-    /// except beside a fixed curve end, where the end point's share is capped at 10× the asked
+    /// except beside a fixed curve end, where the end point's share is capped at 3× the asked
     /// rise so a point next to a pinned end cannot fling its neighbour (the caller re-checks).
     /// Segments two or more away from x are untouched. Returns the rise actually achieved at x.
     pub fn raise_at(&mut self, x: f64, delta: f64) -> f64 {
@@ -301,7 +301,7 @@ impl Curve {
             (false, false) => return 0.0,
         };
         let gain = w_left * (b[0] + b[1]) + w_right * (b[2] + b[3]);
-        let scale = (1.0 / gain.max(1e-12)).min(if left_free && right_free { f64::INFINITY } else { 10.0 });
+        let scale = (1.0 / gain.max(1e-12)).min(if left_free && right_free { f64::INFINITY } else { 3.0 });
         let (d_left, d_right) = (delta * w_left * scale, delta * w_right * scale);
         if left_free {
             for i in 3 * j - 1..=3 * j + 1 {

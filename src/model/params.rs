@@ -93,6 +93,60 @@ pub struct OptimiserParams {
     pub weight_ankle: f64,
 }
 
+/// The kind of ground in `[terrain]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum TerrainChoice {
+    Flat,
+    Stairs,
+    Slope,
+    Random,
+}
+
+/// `[terrain]`: every kind's settings, so switching kinds keeps the others' values.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct TerrainParams {
+    pub kind: TerrainChoice,
+    pub start_x_m: f64,
+    pub rise_m: f64,
+    pub run_m: f64,
+    pub count: u32,
+    pub up: bool,
+    pub grade_pct: f64,
+    pub seed: u64,
+    pub roughness: f64,
+    pub amplitude_m: f64,
+    pub segment_m: f64,
+    pub length_m: f64,
+}
+
+impl TerrainParams {
+    /// The model's terrain description for the chosen kind.
+    #[must_use]
+    pub fn kind(&self) -> TerrainKind {
+        match self.kind {
+            TerrainChoice::Flat => TerrainKind::Flat,
+            TerrainChoice::Stairs => TerrainKind::Stairs {
+                rise_m: self.rise_m,
+                run_m: self.run_m,
+                count: self.count,
+                up: self.up,
+                start_x_m: self.start_x_m,
+            },
+            TerrainChoice::Slope => TerrainKind::Slope { grade_pct: self.grade_pct, start_x_m: self.start_x_m },
+            TerrainChoice::Random => TerrainKind::Random {
+                seed: self.seed,
+                roughness: self.roughness,
+                amplitude_m: self.amplitude_m,
+                segment_m: self.segment_m,
+                length_m: self.length_m,
+                start_x_m: self.start_x_m,
+            },
+        }
+    }
+}
+
 /// `[sim]`.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
@@ -112,7 +166,7 @@ pub struct WalkParams {
     pub arms: ArmParams,
     pub ik: IkParams,
     pub optimiser: OptimiserParams,
-    pub terrain: TerrainKind,
+    pub terrain: TerrainParams,
     pub sim: SimParams,
     /// Control-point overrides by curve name (`[curves.<name>] points = [[x, y], …]`).
     pub curves: BTreeMap<String, Vec<(f64, f64)>>,
@@ -163,7 +217,20 @@ impl Default for WalkParams {
             },
             ik: IkParams { reach_margin: 0.999 },
             optimiser: OptimiserParams { weight_hip: 1.0, weight_knee: 1.0, weight_ankle: 1.0 },
-            terrain: TerrainKind::Flat,
+            terrain: TerrainParams {
+                kind: TerrainChoice::Flat,
+                start_x_m: 2.0,
+                rise_m: 0.15,
+                run_m: 0.34,
+                count: 8,
+                up: true,
+                grade_pct: 8.0,
+                seed: 2016,
+                roughness: 0.7,
+                amplitude_m: 0.06,
+                segment_m: 0.5,
+                length_m: 300.0,
+            },
             sim: SimParams { fps: 60.0, cycles: 10 },
             curves: BTreeMap::new(),
         }

@@ -125,7 +125,7 @@ impl Walker {
     pub fn new(params: &WalkParams) -> Result<Self, ModelError> {
         let r = params.resolve();
         let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
-        let terrain = Terrain::new(params.terrain.clone());
+        let terrain = Terrain::new(params.terrain.kind());
         if !(r.toe_off > 0.5) {
             return Err(ModelError(format!(
                 "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
@@ -512,13 +512,18 @@ impl Walker {
         let ms_phase = self.plan.last_of(KeyKind::MidStance).map_or(f64::NAN, |k| k.phase);
         // From the end of the swing (when a plan is given: the knee is nearly straight there
         // too) through loading response and midstance.
-        let window_start = if swing.is_some() { strike_phase - 0.03 } else { strike_phase };
+        // Samples are densest around heel strike, where the leg is straightest.
+        let mut samples: Vec<f64> = Vec::with_capacity(24);
+        if swing.is_some() {
+            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
+        }
+        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
         let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        samples.extend((1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0));
         let mut dropped = 0.0;
         for _ in 0..6 {
             let mut worst: Option<(f64, KeyKind)> = None;
-            for i in 0..=14 {
-                let phase = window_start + (window_end - window_start) * i as f64 / 14.0;
+            for &phase in &samples {
                 let ankle = match swing {
                     Some(plan) if phase < strike_phase => {
                         let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
@@ -656,13 +661,14 @@ impl Walker {
 
     /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
     /// the plan, IK; raise the heel-height curve where the ankle is beyond reach, then where
-    /// heel, toe tip or sole would come within the clearance of the ground. Up to four passes.
+    /// heel, toe tip or sole would come within the clearance of the ground. Up to eight passes;
+    /// the foot's first 8 % are left alone, as its toe is on the ground at toe-off by design.
     fn simulate_swing(&self, side: Side, toe_off_phase: f64, plan: &mut SwingPlan) {
         let r = &self.r;
         let dims = &r.dims;
         let limit = r.reach_margin * dims.leg_reach();
         let span = 1.0 - r.toe_off;
-        for _pass in 0..4 {
+        for _pass in 0..8 {
             let mut raised = false;
             let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
             for i in 0..SWING_SAMPLES {
@@ -696,7 +702,7 @@ impl Walker {
                     let sole_y = pose.heel.y + (pose.toe_tip.y - pose.heel.y) * f;
                     deficit = deficit.max(top + needed - sole_y);
                 }
-                if deficit > 1e-5 && s < 0.985 {
+                if deficit > 1e-5 && s > 0.08 && s < 0.985 {
                     plan.heel_height.raise_at(s, deficit + 1e-4);
                     plan.raises += 1;
                     raised = true;

@@ -1,0 +1,197 @@
+//! The `gaitlab` command line: parsing (clap) and the headless commands.
+
+use crate::config::{self, presets, render, ConfigErrors};
+use crate::model::params::WalkParams;
+use crate::model::walk::Walker;
+use crate::output::{joint_table, write_atomic};
+use clap::{Parser, Subcommand};
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+/// What a command ends with: an exit code, with messages already printed.
+pub type ExitCode = i32;
+
+/// gaitlab — a terminal lab for procedural human walking.
+#[derive(Debug, Parser)]
+#[command(name = "gaitlab", version, about, long_about = None)]
+pub struct Cli {
+    /// Config for the terminal lab (the embedded default without one).
+    pub config: Option<PathBuf>,
+    /// The command; without one, the terminal lab.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The commands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Validate configs: prints `ok: PATH` or one line per problem, PATH:LINE:COL: key: message
+    Check {
+        /// Config files.
+        #[arg(required = true)]
+        configs: Vec<PathBuf>,
+        /// Override a key: --set walk.speed_mps=1.4 (dotted TOML path, TOML value; repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
+    /// Run the walk headless and write the joint table as CSV
+    Simulate {
+        /// Config file.
+        config: PathBuf,
+        /// Gait cycles to simulate [default: the config's sim.cycles]
+        #[arg(long)]
+        cycles: Option<u32>,
+        /// Frames per second [default: the config's sim.fps]
+        #[arg(long)]
+        fps: Option<f64>,
+        /// Write the CSV here (atomically) instead of to stdout
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Override a key: --set walk.speed_mps=1.4 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
+    /// List the presets: name, then a short description
+    Presets,
+    /// Print a complete, commented config
+    Init {
+        /// Start from this preset (see `gaitlab presets`)
+        #[arg(long)]
+        preset: Option<String>,
+    },
+}
+
+/// Prints config problems to stderr.
+fn report_config_errors(errors: &ConfigErrors) {
+    for e in &errors.0 {
+        eprintln!("{e}");
+    }
+}
+
+/// Loads a config with overrides, printing problems; `Err` carries exit code 2.
+pub fn load_config(path: &Path, sets: &[String]) -> Result<WalkParams, ExitCode> {
+    config::load(path, sets).map_err(|e| {
+        report_config_errors(&e);
+        2
+    })
+}
+
+/// Runs the parsed command line.
+pub fn run(cli: Cli) -> ExitCode {
+    match cli.command {
+        None => match cli.config {
+            None => {
+                let _ = <Cli as clap::CommandFactory>::command().print_help();
+                println!("\n\nThe terminal lab is not built yet; use `gaitlab simulate CONFIG` meanwhile.");
+                0
+            }
+            Some(path) => {
+                eprintln!(
+                    "gaitlab: the terminal lab (gaitlab {}) is not built yet; try `gaitlab simulate {}`",
+                    path.display(),
+                    path.display()
+                );
+                2
+            }
+        },
+        Some(Command::Check { configs, sets }) => check(&configs, &sets),
+        Some(Command::Simulate { config, cycles, fps, out, sets }) => simulate(&config, cycles, fps, out.as_deref(), &sets),
+        Some(Command::Presets) => {
+            for (name, text) in presets::PRESETS {
+                println!("{name:<12} {}", presets::description(text));
+            }
+            0
+        }
+        Some(Command::Init { preset }) => init(preset.as_deref()),
+    }
+}
+
+fn check(configs: &[PathBuf], sets: &[String]) -> ExitCode {
+    let mut code = 0;
+    for path in configs {
+        match config::load(path, sets) {
+            Ok(_) => println!("ok: {}", path.display()),
+            Err(e) => {
+                report_config_errors(&e);
+                code = 2;
+            }
+        }
+    }
+    code
+}
+
+fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Path>, sets: &[String]) -> ExitCode {
+    let params = match load_config(path, sets) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let fps = fps.unwrap_or(params.sim.fps);
+    if !(10.0..=1000.0).contains(&fps) {
+        eprintln!("gaitlab simulate: --fps {fps} is out of range; valid: 10 to 1000 frames/s");
+        return 2;
+    }
+    let cycles = cycles.unwrap_or(params.sim.cycles);
+    if cycles == 0 || cycles > 100_000 {
+        eprintln!("gaitlab simulate: --cycles {cycles} is out of range; valid: 1 to 100000");
+        return 2;
+    }
+    let mut walker = match Walker::new(&params) {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("{}: {e}", path.display());
+            return 2;
+        }
+    };
+    let frames = (f64::from(cycles) * walker.resolved().cycle_s * fps).round() as u64;
+    let mut write = |out: &mut dyn Write| -> io::Result<()> {
+        joint_table::write_header(out)?;
+        let mut line = String::with_capacity(512);
+        for i in 0..=frames {
+            if i > 0 {
+                walker.advance(1.0 / fps);
+            }
+            joint_table::format_row(&walker.frame(i), &mut line);
+            line.push('\n');
+            out.write_all(line.as_bytes())?;
+        }
+        out.flush()
+    };
+    let result = match out {
+        Some(file) => write_atomic(file, write).map_err(|e| format!("cannot write {}: {e}", file.display())),
+        None => {
+            let stdout = io::stdout();
+            let mut lock = io::BufWriter::new(stdout.lock());
+            write(&mut lock).map_err(|e| format!("cannot write to stdout: {e}"))
+        }
+    };
+    match result {
+        Ok(()) => 0,
+        Err(e) if e.contains("Broken pipe") => 0,
+        Err(e) => {
+            eprintln!("gaitlab simulate: {e}");
+            1
+        }
+    }
+}
+
+fn init(preset: Option<&str>) -> ExitCode {
+    let name = preset.unwrap_or("default");
+    let Some(text) = presets::text(name) else {
+        let names: Vec<&str> = presets::PRESETS.iter().map(|(n, _)| *n).collect();
+        let hint = config::schema::did_you_mean(name, names.iter().copied())
+            .map_or(String::new(), |n| format!("did you mean `{n}`? "));
+        eprintln!("gaitlab init: no preset `{name}`; {hint}presets: {}", names.join(", "));
+        return 2;
+    };
+    match presets::params(name).expect("listed") {
+        Ok(params) => {
+            let description = if name == "default" { presets::DEFAULT_DESCRIPTION } else { presets::description(text) };
+            print!("{}", render::render(&params, &format!("preset: {description}")));
+            0
+        }
+        Err(e) => {
+            report_config_errors(&e);
+            1
+        }
+    }
+}

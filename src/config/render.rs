@@ -1,0 +1,106 @@
+//! Writes a complete, commented config (`gaitlab init`): every key with its doc line, unit
+//! and valid range; derived keys commented out with the value they derive to.
+
+use crate::config::schema::{Kind, Value, GROUPS, PARAMS};
+use crate::model::gait_curves::CurveName;
+use crate::model::params::{Resolved, WalkParams};
+
+/// A number as TOML writes it: always with a decimal point, at most 4 decimals.
+#[must_use]
+pub fn toml_number(x: f64) -> String {
+    let rounded = (x * 1e4).round() / 1e4;
+    let rounded = if rounded == 0.0 { 0.0 } else { rounded };
+    if rounded.fract() == 0.0 { format!("{rounded:.1}") } else { format!("{rounded}") }
+}
+
+/// What a derived key resolves to, in the key's unit.
+#[must_use]
+pub fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f64> {
+    let d = &r.dims;
+    let deg = f64::to_degrees;
+    let unsway = |x: f64| if p.walk.sway > 0.0 { x / p.walk.sway } else { x };
+    Some(match key {
+        "body.thigh_m" => d.thigh,
+        "body.shank_m" => d.shank,
+        "body.ankle_height_m" => d.ankle_height,
+        "body.foot_length_m" => d.foot_length,
+        "body.upper_arm_m" => d.upper_arm,
+        "body.forearm_m" => d.forearm,
+        "body.hand_m" => d.hand,
+        "body.hip_width_m" => d.hip_width,
+        "body.shoulder_width_m" => d.shoulder_width,
+        "body.trunk_m" => d.trunk,
+        "walk.stride_m" => r.stride_m,
+        "walk.cadence_spm" => 120.0 / r.cycle_s,
+        "walk.step_width_m" => r.step_width_m,
+        "pelvis.rotation_range_deg" => deg(r.rotation_range),
+        "pelvis.obliquity_range_deg" => unsway(deg(r.obliquity_range)),
+        "pelvis.vertical_range_cm" => r.vertical_range * 100.0,
+        "pelvis.lateral_range_cm" => unsway(r.lateral_range * 100.0),
+        "pelvis.midstance_drop_cm" => r.midstance_drop * 100.0,
+        "legs.toe_off" => r.toe_off,
+        "arms.shoulder_range_deg" => deg(r.shoulder_range),
+        "arms.elbow_range_deg" => deg(r.elbow_range),
+        _ => return None,
+    })
+}
+
+/// The value of a key as TOML text (`None` for a derived key that is not set).
+#[must_use]
+pub fn value_text(value: &Value) -> Option<String> {
+    match value {
+        Value::Real(x) => Some(toml_number(*x)),
+        Value::Int(n) => Some(n.to_string()),
+        Value::Word(w) => Some(format!("\"{w}\"")),
+        Value::Auto => None,
+    }
+}
+
+/// The whole config for `params`, headed by `title` (one comment line).
+#[must_use]
+pub fn render(params: &WalkParams, title: &str) -> String {
+    let r = params.resolve();
+    let mut out = String::new();
+    out.push_str(&format!("# {title}\n"));
+    out.push_str("#\n# A gaitlab config. Every key is optional: a missing key takes its default. Keys shown\n");
+    out.push_str("# commented out are derived from walk.speed_mps, walk.sway and body.height_m; set one\n");
+    out.push_str("# to override the derivation for that key alone. Units are SI unless the name says\n");
+    out.push_str("# otherwise (_deg, _cm, _pct); phases are fractions of the gait cycle from heel strike.\n");
+    for group in GROUPS.iter().filter(|g| **g != "curves") {
+        out.push_str(&format!("\n[{group}]\n"));
+        for spec in PARAMS.iter().filter(|p| p.group() == *group) {
+            let unit = if spec.unit.is_empty() { String::new() } else { format!(" [{}]", spec.unit) };
+            out.push_str(&format!("# {}{unit}. Valid: {}.\n", spec.doc, spec.valid_range()));
+            match value_text(&(spec.get)(params)) {
+                Some(v) => out.push_str(&format!("{} = {v}\n", spec.name())),
+                None => {
+                    let derived = derived_value(spec.key, params, &r).map_or("?".into(), toml_number);
+                    let auto = matches!(spec.kind, Kind::Real { auto: true, .. });
+                    debug_assert!(auto);
+                    out.push_str(&format!("# {} = {derived}  # derived\n", spec.name()));
+                }
+            }
+        }
+    }
+    out.push_str("\n# [curves.<name>] replaces a curve's control points: points = [[x, y], ...], 3n+1 of\n");
+    out.push_str("# them, x from 0 to 1 and increasing; cycle curves must end where they start.\n# Curves: ");
+    let names: Vec<&str> = CurveName::ALL.iter().map(|c| c.key()).collect();
+    out.push_str(&names.join(", "));
+    out.push_str(".\n# Example, the default heel-rise curve (foot-ground angle in degrees for a 1.8 m stride):\n");
+    out.push_str("# [curves.heel_rise]\n# points = [");
+    let pts: Vec<String> = CurveName::HeelRise
+        .default_curve()
+        .points()
+        .iter()
+        .map(|p| format!("[{}, {}]", toml_number(p.x), toml_number(p.y)))
+        .collect();
+    out.push_str(&pts.join(", "));
+    out.push_str("]\n");
+    for (name, points) in &params.curves {
+        out.push_str(&format!("\n[curves.{name}]\npoints = ["));
+        let pts: Vec<String> = points.iter().map(|(x, y)| format!("[{}, {}]", toml_number(*x), toml_number(*y))).collect();
+        out.push_str(&pts.join(", "));
+        out.push_str("]\n");
+    }
+    out
+}

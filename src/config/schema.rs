@@ -1,0 +1,308 @@
+//! Every config key: its unit, valid range, doc line, and where it lives in [`WalkParams`].
+//!
+//! This table is the single source for validation, `gaitlab init`, `--set`, and (later) the
+//! TUI's parameter editor. Defaults come from `WalkParams::default()`, never from here.
+
+use crate::model::body::Sex;
+use crate::model::params::{TerrainChoice, WalkParams};
+
+/// A parameter's value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// A number in the key's unit.
+    Real(f64),
+    /// A derived value that is not set (the knobs fill it in).
+    Auto,
+    /// A whole number.
+    Int(i64),
+    /// One of a list of words.
+    Word(&'static str),
+}
+
+/// What values a key takes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    /// A number in `[min, max]`; `auto` keys may be left out to be derived.
+    Real {
+        /// Smallest valid value.
+        min: f64,
+        /// Largest valid value.
+        max: f64,
+        /// Whether leaving it out derives it from the knobs.
+        auto: bool,
+    },
+    /// A whole number in `[min, max]`.
+    Int {
+        /// Smallest valid value.
+        min: i64,
+        /// Largest valid value.
+        max: i64,
+    },
+    /// One of these words.
+    Choice(&'static [&'static str]),
+}
+
+/// One config key.
+#[derive(Clone, Copy)]
+pub struct ParamSpec {
+    /// Dotted key, `group.name`.
+    pub key: &'static str,
+    /// Unit as shown to users (`m`, `deg`, `%`, `` for plain numbers).
+    pub unit: &'static str,
+    /// One line of documentation.
+    pub doc: &'static str,
+    /// Valid values.
+    pub kind: Kind,
+    /// Reads the value.
+    pub get: fn(&WalkParams) -> Value,
+    /// Writes a value already checked against `kind`.
+    pub set: fn(&mut WalkParams, &Value),
+}
+
+impl std::fmt::Debug for ParamSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ParamSpec").field("key", &self.key).field("kind", &self.kind).finish()
+    }
+}
+
+impl ParamSpec {
+    /// The group (`walk` of `walk.speed_mps`).
+    #[must_use]
+    pub fn group(&self) -> &'static str {
+        self.key.split_once('.').map_or(self.key, |(g, _)| g)
+    }
+
+    /// The name within the group.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        self.key.split_once('.').map_or(self.key, |(_, n)| n)
+    }
+
+    /// The valid values, as said in error messages and docs.
+    #[must_use]
+    pub fn valid_range(&self) -> String {
+        match self.kind {
+            Kind::Real { min, max, auto } => {
+                let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
+                let auto = if auto { ", or leave it out to derive it" } else { "" };
+                format!("a number from {min} to {max}{unit}{auto}")
+            }
+            Kind::Int { min, max } => format!("a whole number from {min} to {max}"),
+            Kind::Choice(words) => {
+                format!("one of {}", words.iter().map(|w| format!("\"{w}\"")).collect::<Vec<_>>().join(", "))
+            }
+        }
+    }
+}
+
+macro_rules! real {
+    ($($grp:ident).+ => $field:ident, $unit:expr, $min:expr, $max:expr, $doc:expr) => {
+        ParamSpec {
+            key: concat!(stringify!($($grp).+), ".", stringify!($field)),
+            unit: $unit,
+            doc: $doc,
+            kind: Kind::Real { min: $min, max: $max, auto: false },
+            get: |p| Value::Real(p.$($grp).+.$field),
+            set: |p, v| {
+                if let Value::Real(x) = v {
+                    p.$($grp).+.$field = *x;
+                }
+            },
+        }
+    };
+}
+
+macro_rules! auto {
+    ($grp:ident => $field:ident, $unit:expr, $min:expr, $max:expr, $doc:expr) => {
+        ParamSpec {
+            key: concat!(stringify!($grp), ".", stringify!($field)),
+            unit: $unit,
+            doc: $doc,
+            kind: Kind::Real { min: $min, max: $max, auto: true },
+            get: |p| p.$grp.$field.map_or(Value::Auto, Value::Real),
+            set: |p, v| {
+                p.$grp.$field = match v {
+                    Value::Real(x) => Some(*x),
+                    _ => None,
+                }
+            },
+        }
+    };
+}
+
+const SEXES: &[&str] = &["female", "male"];
+const TERRAINS: &[&str] = &["flat", "stairs", "slope", "random"];
+const DIRECTIONS: &[&str] = &["up", "down"];
+
+/// Every key, in the order `gaitlab init` prints them.
+pub static PARAMS: &[ParamSpec] = &[
+    real!(body => height_m, "m", 1.2, 2.2, "Standing height; every segment is a proportion of it (Drillis & Contini)"),
+    ParamSpec {
+        key: "body.sex",
+        unit: "",
+        doc: "Sets hip and shoulder widths: female bodies have a wider pelvis and narrower shoulders",
+        kind: Kind::Choice(SEXES),
+        get: |p| Value::Word(if p.body.sex == Sex::Female { "female" } else { "male" }),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.body.sex = if *w == "female" { Sex::Female } else { Sex::Male };
+            }
+        },
+    },
+    auto!(body => thigh_m, "m", 0.2, 0.7, "Hip to knee joint centre; default 0.245 H"),
+    auto!(body => shank_m, "m", 0.2, 0.7, "Knee to ankle joint centre; default 0.246 H"),
+    auto!(body => ankle_height_m, "m", 0.03, 0.12, "Ankle joint above the sole; default 0.039 H"),
+    auto!(body => foot_length_m, "m", 0.15, 0.35, "Heel to toe tip; default 0.152 H"),
+    auto!(body => upper_arm_m, "m", 0.15, 0.5, "Shoulder to elbow; default 0.186 H"),
+    auto!(body => forearm_m, "m", 0.12, 0.45, "Elbow to wrist; default 0.146 H"),
+    auto!(body => hand_m, "m", 0.08, 0.3, "Wrist to finger tip; default 0.108 H"),
+    auto!(body => hip_width_m, "m", 0.1, 0.35, "Between the hip joint centres; default 0.098 H (male), 0.108 H (female)"),
+    auto!(body => shoulder_width_m, "m", 0.2, 0.6, "Between the shoulder joints; default 0.220 H (male), 0.200 H (female)"),
+    auto!(body => trunk_m, "m", 0.3, 0.8, "Hip-joint level to shoulder level; default 0.288 H"),
+    real!(walk => speed_mps, "m/s", 0.4, 2.0, "Walking speed: drives stride, cadence, step width, double support, pelvis and arm amplitudes"),
+    real!(walk => sway, "", 0.0, 3.0, "Sway knob: scales pelvic obliquity, lateral pelvis sway and with them the trunk's side bend"),
+    auto!(walk => stride_m, "m", 0.5, 2.0, "Heel strike to heel strike of one foot; derived from speed and a constant walk ratio"),
+    auto!(walk => cadence_spm, "steps/min", 50.0, 160.0, "Steps per minute; the cycle lasts 120/cadence s"),
+    auto!(walk => step_width_m, "m", 0.0, 0.35, "Lateral distance between the two feet's heel lines"),
+    auto!(pelvis => rotation_range_deg, "deg", 0.0, 20.0, "Peak-to-peak pelvic rotation (transverse plane)"),
+    auto!(pelvis => obliquity_range_deg, "deg", 0.0, 20.0, "Peak-to-peak pelvic obliquity (frontal plane), before the sway knob"),
+    real!(pelvis => tilt_range_deg, "deg", 0.0, 12.0, "Peak-to-peak pelvic tilt (sagittal plane), two waves a cycle"),
+    auto!(pelvis => vertical_range_cm, "cm", 0.0, 8.0, "Peak-to-peak vertical pelvis travel on level ground"),
+    auto!(pelvis => lateral_range_cm, "cm", 0.0, 15.0, "Peak-to-peak side-to-side pelvis sway, before the sway knob"),
+    auto!(pelvis => midstance_drop_cm, "cm", 0.0, 10.0, "How far below standing hip height the pelvis passes at mid-stance (its highest point)"),
+    real!(pelvis => midstance_offset_cm, "cm", -10.0, 30.0, "Pelvis ahead of the stance heel at mid-stance"),
+    real!(pelvis => trunk_lean_deg, "deg", -10.0, 30.0, "Forward lean of the trunk"),
+    real!(legs => foot_flat, "cycle", 0.03, 0.3, "Cycle phase at which the loading response ends and the foot is flat"),
+    real!(legs => heel_rise, "cycle", 0.15, 0.5, "Cycle phase at which the heel rises (end of midstance)"),
+    auto!(legs => toe_off, "cycle", 0.51, 0.75, "Cycle phase of toe-off; stance lasts this share of the cycle, double support twice (toe_off - 0.5)"),
+    real!(legs => turnout_deg, "deg", -10.0, 30.0, "Foot turnout about the vertical; also turns the knee's reference direction"),
+    real!(legs => knee_lift_cm, "cm", 0.0, 30.0, "Extra heel height in mid-swing"),
+    real!(legs => clearance_cm, "cm", 0.0, 10.0, "Clearance the swing planner keeps between the foot and the ground or stair nosings"),
+    auto!(arms => shoulder_range_deg, "deg", 0.0, 90.0, "Peak-to-peak shoulder flexion of the arm swing"),
+    auto!(arms => elbow_range_deg, "deg", 0.0, 90.0, "Peak-to-peak elbow flexion of the arm swing"),
+    real!(arms => elbow_min_flex_deg, "deg", 0.0, 90.0, "Least elbow flexion (the arm's greatest extension)"),
+    real!(arms => spread_deg, "deg", 0.0, 45.0, "Arm abduction away from the trunk"),
+    real!(arms => counter_rotation_pct, "%", 0.0, 150.0, "Thorax counter-rotation against the pelvic rotation"),
+    real!(ik => reach_margin, "", 0.95, 1.0, "Share of full leg reach the planner keeps the stance leg within (the knee never locks)"),
+    real!(optimiser => weight_hip, "", 0.0, 100.0, "Weight of the hip's squared angular acceleration in the pelvis choice"),
+    real!(optimiser => weight_knee, "", 0.0, 100.0, "Weight of the knee's squared angular acceleration in the pelvis choice"),
+    real!(optimiser => weight_ankle, "", 0.0, 100.0, "Weight of the ankle's squared angular acceleration in the pelvis choice"),
+    ParamSpec {
+        key: "terrain.kind",
+        unit: "",
+        doc: "Ground profile: flat, stairs, slope or random (midpoint displacement)",
+        kind: Kind::Choice(TERRAINS),
+        get: |p| {
+            Value::Word(match p.terrain.kind {
+                TerrainChoice::Flat => "flat",
+                TerrainChoice::Stairs => "stairs",
+                TerrainChoice::Slope => "slope",
+                TerrainChoice::Random => "random",
+            })
+        },
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.terrain.kind = match *w {
+                    "stairs" => TerrainChoice::Stairs,
+                    "slope" => TerrainChoice::Slope,
+                    "random" => TerrainChoice::Random,
+                    _ => TerrainChoice::Flat,
+                };
+            }
+        },
+    },
+    real!(terrain => start_x_m, "m", 0.0, 50.0, "Where stairs, slope or rough ground begin; level before"),
+    real!(terrain => rise_m, "m", 0.02, 0.25, "Stairs: height of one step"),
+    real!(terrain => run_m, "m", 0.2, 0.8, "Stairs: depth of one tread (must hold a whole foot)"),
+    ParamSpec {
+        key: "terrain.count",
+        unit: "",
+        doc: "Stairs: number of steps; level ground after the last",
+        kind: Kind::Int { min: 1, max: 500 },
+        get: |p| Value::Int(i64::from(p.terrain.count)),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.terrain.count = u32::try_from(*n).unwrap_or(1);
+            }
+        },
+    },
+    ParamSpec {
+        key: "terrain.direction",
+        unit: "",
+        doc: "Stairs: up or down",
+        kind: Kind::Choice(DIRECTIONS),
+        get: |p| Value::Word(if p.terrain.up { "up" } else { "down" }),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.terrain.up = *w == "up";
+            }
+        },
+    },
+    real!(terrain => grade_pct, "%", -25.0, 25.0, "Slope: rise over run x 100, negative downhill"),
+    ParamSpec {
+        key: "terrain.seed",
+        unit: "",
+        doc: "Random: seed of the portable generator; the same seed gives the same ground everywhere",
+        kind: Kind::Int { min: 0, max: 9_007_199_254_740_991 },
+        get: |p| Value::Int(p.terrain.seed as i64),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.terrain.seed = u64::try_from(*n).unwrap_or(0);
+            }
+        },
+    },
+    real!(terrain => roughness, "", 0.0, 1.0, "Random: roughness exponent H; large is smooth, small is rough"),
+    real!(terrain => amplitude_m, "m", 0.0, 0.3, "Random: range of the first displacement"),
+    real!(terrain => segment_m, "m", 0.1, 2.0, "Random: width of one terrain segment"),
+    real!(terrain => length_m, "m", 10.0, 5000.0, "Random: length of ground generated; level after it"),
+    real!(sim => fps, "frames/s", 10.0, 1000.0, "Frame rate of simulate and report when --fps is not given"),
+    ParamSpec {
+        key: "sim.cycles",
+        unit: "",
+        doc: "Gait cycles simulated when --cycles is not given",
+        kind: Kind::Int { min: 1, max: 100_000 },
+        get: |p| Value::Int(i64::from(p.sim.cycles)),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.sim.cycles = u32::try_from(*n).unwrap_or(1);
+            }
+        },
+    },
+];
+
+/// The spec of `key`.
+#[must_use]
+pub fn spec(key: &str) -> Option<&'static ParamSpec> {
+    PARAMS.iter().find(|p| p.key == key)
+}
+
+/// The config groups, in order.
+pub const GROUPS: &[&str] = &["body", "walk", "pelvis", "legs", "arms", "ik", "optimiser", "terrain", "sim", "curves"];
+
+/// Levenshtein distance, for "did you mean".
+#[must_use]
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// The closest of `candidates` to `word`, if close enough to be a likely typo.
+#[must_use]
+pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .into_iter()
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|(d, c)| *d <= (c.len() / 3).max(2))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
+}
