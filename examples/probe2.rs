@@ -1,14 +1,15 @@
 use gaitlab::analysis;
 use gaitlab::config::presets;
+use gaitlab::model::walk::Walker;
 fn main() {
     let name = std::env::args().nth(1).unwrap();
     let p = presets::params(&name).unwrap().unwrap();
-    let run = analysis::run(&p, 20.0, 60.0).unwrap();
-    for f in &run.frames {
+    let w = Walker::new(&p).unwrap();
+    let t = w.terrain().clone();
+    let run = analysis::run(&p, 16.0, 120.0).unwrap();
+    for f in &run.frames[480..500] {
         for (i, l) in f.legs.iter().enumerate() {
-            if !l.reached { println!("{} leg{} {:.3} {} hip {:.3} ankle {:.3} dist {:.4}", f.frame, i, l.phase, l.leg_phase.name(), l.hip, l.ankle, l.hip.distance(l.ankle)); }
+            if l.leg_phase.name() == "swing" { println!("{} leg{} {:.3} heel {:.4} ground {:.4} toe {:.4} ground {:.4}", f.frame, i, l.phase, l.heel, t.height(l.heel.x), l.toe, t.height(l.toe.x)); }
         }
     }
-    for ff in run.footfalls.iter().take(14) { println!("{} {:?} {:.3} nominal {:.3}", ff.step, ff.side, ff.heel, ff.nominal_x); }
-    for sp in run.step_plans.iter().take(12) { println!("{sp:?}"); }
 }

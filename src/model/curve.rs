@@ -316,6 +316,20 @@ impl Curve {
         delta * gain * scale
     }
 
+    /// Makes the curve arrive at its end with a slope of at most `max_slope` (dy/dx) by moving
+    /// the last handle only: the end point and every join stay where they are. Returns
+    /// whether anything changed.
+    pub fn limit_end_slope(&mut self, max_slope: f64) -> bool {
+        let n = self.points.len();
+        let (handle, end) = (self.points[n - 2], self.points[n - 1]);
+        let dx = end.x - handle.x;
+        if dx <= 0.0 || (end.y - handle.y) / dx <= max_slope {
+            return false;
+        }
+        self.points[n - 2].y = end.y - max_slope * dx;
+        true
+    }
+
     /// Adds `dy` to every control point: moves the whole curve up without changing its shape.
     pub fn offset_y(&mut self, dy: f64) {
         for p in &mut self.points {

@@ -36,6 +36,9 @@ pub const SWING_ANKLE_DESIGN_DEG: f64 = 15.0;
 pub const SWING_HEEL_DESIGN_M: f64 = 0.20;
 /// Least foot–ground angle at heel strike (rad): the heel, not the toe, lands first.
 pub const MIN_STRIKE_ANGLE: f64 = 0.035;
+/// Slope of the heel-height curve at landing (m per swing), at most: the heel descends onto
+/// the footfall.
+pub const LANDING_SLOPE_M: f64 = -0.08;
 /// Steepest heel rise the stance leg may take to reach (rad).
 pub const MAX_HEEL_RISE: f64 = 1.45;
 
@@ -622,6 +625,9 @@ impl Walker {
         if r.knee_lift > 0.0 {
             heel_height.raise_at(0.5, r.knee_lift);
         }
+        // The heel must come down onto the footfall, never up into it: a big step up tilts
+        // the shifted curve's end upward, so the last handle is set back to a descent.
+        heel_height.limit_end_slope(LANDING_SLOPE_M);
         let mut plan = SwingPlan {
             heel_from,
             ground_from,

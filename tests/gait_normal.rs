@@ -1,0 +1,294 @@
+//! The default walk measured from its frames: the figures of a normal adult gait, the timing
+//! of the phases, both legs alike, feet landing where planned; stairs and slopes; live
+//! parameter changes.
+
+use gaitlab::analysis;
+use gaitlab::config::{self, presets};
+use gaitlab::model::body::Side;
+use gaitlab::model::params::WalkParams;
+use gaitlab::model::walk::frame::{Frame, Support};
+use gaitlab::model::walk::leg::LegPhase;
+use gaitlab::model::walk::Walker;
+
+fn default_params() -> WalkParams {
+    presets::params("default").unwrap().unwrap()
+}
+
+fn preset(name: &str) -> WalkParams {
+    presets::params(name).unwrap().unwrap()
+}
+
+#[test]
+fn default_walk_has_normal_timing_stride_and_cadence() {
+    let p = default_params();
+    let r = p.resolve();
+    // 300 fps so that phase shares are measured to a third of a percent.
+    let run = analysis::run(&p, 12.0, 300.0).unwrap();
+    let steady = &run.frames[run.frames.len() / 12..];
+    for side in Side::BOTH {
+        let stance = steady.iter().filter(|f| f.legs[side.index()].leg_phase.is_stance()).count() as f64
+            / steady.len() as f64;
+        assert!((stance - 0.62).abs() < 0.005, "{side:?} stance {stance}");
+    }
+    // Double support exactly in the spec's windows (0–0.12 and 0.50–0.62 of the right cycle),
+    // give or take one frame at the boundaries.
+    let tol = 1.0 / (300.0 * r.cycle_s);
+    for f in steady {
+        let p = f.legs[0].phase;
+        let in_window = p < 0.12 - tol || (p > 0.5 + tol && p < 0.62 - tol);
+        let out_window = (p > 0.12 + tol && p < 0.5 - tol) || p > 0.62 + tol;
+        if in_window {
+            assert_eq!(f.support, Support::Double, "phase {p}");
+        }
+        if out_window {
+            assert_ne!(f.support, Support::Double, "phase {p}");
+        }
+    }
+    // Stride and cadence from the footfalls and the heel strikes' times.
+    let falls: Vec<_> = run.footfalls.iter().filter(|f| f.side == Side::Right).collect();
+    for w in falls.windows(2) {
+        assert!((w[1].heel.x - w[0].heel.x - r.stride_m).abs() < 1e-9);
+    }
+    let strikes: Vec<f64> = run
+        .frames
+        .windows(2)
+        .filter(|w| w[1].legs[0].phase < w[0].legs[0].phase)
+        .map(|w| w[1].time_s - w[1].legs[0].phase * r.cycle_s)
+        .collect();
+    let mean_cycle = (strikes[strikes.len() - 1] - strikes[0]) / (strikes.len() - 1) as f64;
+    let cadence = 120.0 / mean_cycle;
+    assert!((cadence - 120.0 / r.cycle_s).abs() < 0.05, "cadence {cadence}");
+    let speed = (run.frames.last().unwrap().pelvis.x - run.frames[0].pelvis.x) / run.frames.last().unwrap().time_s;
+    assert!((speed - 1.3).abs() < 0.02, "speed {speed}");
+}
+
+#[test]
+fn default_walk_measures_like_a_normal_adult_walk() {
+    let run = analysis::run(&default_params(), 10.0, 120.0).unwrap();
+    let cycles = analysis::cycle_summaries(&run.frames);
+    let c = &cycles[5];
+    // Ranges from normal adult data (Perry & Burnfield; Winter) with the model's tolerance.
+    for side in 0..2 {
+        assert!((55.0..=75.0).contains(&c.knee_max_swing_deg[side]), "knee swing {:?}", c.knee_max_swing_deg);
+        assert!(c.knee_max_stance_deg[side] < 40.0, "knee stance {:?}", c.knee_max_stance_deg);
+        let (ext, flex) = c.hip_flex_deg[side];
+        assert!((-25.0..=-8.0).contains(&ext) && (25.0..=45.0).contains(&flex), "hip {ext}..{flex}");
+        assert!(c.min_toe_clearance_cm[side] > 1.0 && c.min_toe_clearance_cm[side] < 8.0);
+    }
+    assert!((2.0..=5.0).contains(&c.pelvis_vertical_cm), "vertical {}", c.pelvis_vertical_cm);
+    assert!((3.0..=6.0).contains(&c.pelvis_lateral_cm), "lateral {}", c.pelvis_lateral_cm);
+}
+
+/// Frames of one leg, by its own phase.
+fn at_phase(frames: &[Frame], side: usize, phase: f64) -> &Frame {
+    frames.iter().min_by(|a, b| {
+        (a.legs[side].phase - phase).abs().total_cmp(&(b.legs[side].phase - phase).abs())
+    })
+    .unwrap()
+}
+
+#[test]
+fn legs_mirror_each_other_half_a_cycle_apart() {
+    let run = analysis::run(&default_params(), 8.0, 240.0).unwrap();
+    let n = run.frames.len();
+    let window = &run.frames[n / 2..n / 2 + 240];
+    for q in [0.05, 0.2, 0.4, 0.55, 0.7, 0.85] {
+        let r = at_phase(window, 0, q);
+        let l = at_phase(window, 1, q);
+        let (r, l) = (&r.legs[0], &l.legs[1]);
+        assert!((r.knee_flex_deg - l.knee_flex_deg).abs() < 1.0, "knee at {q}: {} vs {}", r.knee_flex_deg, l.knee_flex_deg);
+        assert!((r.hip_flex_deg - l.hip_flex_deg).abs() < 1.0, "hip at {q}");
+        assert!((r.ankle_dorsi_deg - l.ankle_dorsi_deg).abs() < 1.0, "ankle at {q}");
+        assert!((r.heel.z + l.heel.z).abs() < 0.01, "heel z mirrors at {q}");
+    }
+}
+
+#[test]
+fn swing_foot_lands_where_the_footfall_was_planned() {
+    for name in ["default", "stairs_up", "stairs_down", "slope_up", "rough"] {
+        let run = analysis::run(&preset(name), 10.0, 60.0).unwrap();
+        for side in 0..2 {
+            let mut landed = 0;
+            for w in run.frames.windows(2) {
+                if w[0].legs[side].leg_phase == LegPhase::Swing && w[1].legs[side].leg_phase == LegPhase::LoadingResponse {
+                    // The heel is held in loading response; the footfall is the one whose
+                    // heel is nearest.
+                    let heel = w[1].legs[side].heel;
+                    let planned = run.footfalls.iter().map(|f| f.heel.distance(heel)).fold(f64::INFINITY, f64::min);
+                    assert!(planned < 1e-3, "{name}: lands {:.2} mm from the footfall", planned * 1e3);
+                    landed += 1;
+                }
+            }
+            assert!(landed >= 8, "{name}: {landed} landings");
+        }
+    }
+}
+
+#[test]
+fn stairs_are_cleared_and_treads_met_flat() {
+    for name in ["stairs_up", "stairs_down"] {
+        let params = preset(name);
+        let walker = Walker::new(&params).unwrap();
+        let terrain = walker.terrain().clone();
+        let run = analysis::run(&params, 16.0, 120.0).unwrap();
+        let foot = params.resolve().dims.foot_length;
+        // Every footfall lies on one tread: no nosing under the foot.
+        for f in &run.footfalls {
+            let corners = terrain.corners_between(f.heel.x, f.heel.x + foot);
+            assert!(corners.is_empty(), "{name}: footfall at {:.3} straddles {corners:?}", f.heel.x);
+        }
+        // In swing, the heel and toe tip are above the ground under them, and the sole passes
+        // over every nosing between heel and toe.
+        let mut crossings = 0;
+        for f in &run.frames {
+            for l in &f.legs {
+                if l.leg_phase != LegPhase::Swing {
+                    continue;
+                }
+                assert!(l.heel.y >= terrain.height(l.heel.x) - 1e-6, "{name}: heel under at frame {}", f.frame);
+                for c in terrain.corners_between(l.heel.x, l.toe.x) {
+                    let top = terrain.height(c).max(terrain.height(c - 1e-9));
+                    let t = (c - l.heel.x) / (l.toe.x - l.heel.x);
+                    let sole = l.heel.y + (l.toe.y - l.heel.y) * t;
+                    assert!(sole >= top, "{name}: sole {sole:.4} under nosing {top:.4} at frame {}", f.frame);
+                    crossings += 1;
+                }
+            }
+        }
+        assert!(crossings > 10, "{name}: the test saw only {crossings} nosing crossings");
+        // Foot flat on the tread at the end of loading response: heel and toe tip on the ground.
+        for w in run.frames.windows(2) {
+            for side in 0..2 {
+                if w[0].legs[side].leg_phase == LegPhase::LoadingResponse && w[1].legs[side].leg_phase == LegPhase::Midstance {
+                    let l = &w[1].legs[side];
+                    assert!((l.heel.y - terrain.height(l.heel.x)).abs() < 1e-3, "{name}");
+                    assert!((l.toe.y - terrain.height(l.toe.x)).abs() < 1e-3, "{name}: toe {:.4}", l.toe.y);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn slopes_keep_feet_on_and_above_the_ground() {
+    for name in ["slope_up", "slope_down"] {
+        let run = analysis::run(&preset(name), 12.0, 60.0).unwrap();
+        let checks = analysis::checks(&run.frames);
+        assert!(checks.terrain_penetration_mm < 1.0, "{name}: {checks:?}");
+        assert!(checks.foot_skate_mm < 0.5, "{name}: {checks:?}");
+        assert_eq!(checks.reach_failures, 0, "{name}");
+        let end = run.frames.last().unwrap();
+        let climbed = end.legs[0].ground_under_heel;
+        assert!(climbed.abs() > 0.5, "{name}: walked onto the slope ({climbed:.2} m)");
+    }
+}
+
+/// Largest per-frame change of each joint angle over `frames`, both legs.
+fn max_steps(frames: &[Frame]) -> [f64; 4] {
+    let mut out = [0.0f64; 4];
+    for w in frames.windows(2) {
+        for side in 0..2 {
+            let (a, b) = (&w[0].legs[side], &w[1].legs[side]);
+            let d = [
+                (a.hip_flex_deg - b.hip_flex_deg).abs(),
+                (a.knee_flex_deg - b.knee_flex_deg).abs(),
+                (a.ankle_dorsi_deg - b.ankle_dorsi_deg).abs(),
+                (a.shoulder_flex_deg - b.shoulder_flex_deg).abs(),
+            ];
+            for i in 0..4 {
+                out[i] = out[i].max(d[i]);
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
+    let fps = 60.0;
+    let base = default_params();
+    let changed_params =
+        config::load_text("[walk]\nspeed_mps = 1.45\nsway = 1.4\n[arms]\nshoulder_range_deg = 35.0\n", "live", &[]).unwrap();
+    // The usual per-frame change of each joint, before and after: the larger of a walk at
+    // the old and one at the new parameters.
+    let usual_of = |p: &WalkParams| {
+        let mut w = Walker::new(p).unwrap();
+        let frames: Vec<Frame> = (0..600)
+            .map(|i| {
+                w.advance(1.0 / fps);
+                w.frame(i)
+            })
+            .collect();
+        max_steps(&frames)
+    };
+    let (before, after) = (usual_of(&base), usual_of(&changed_params));
+    let usual: Vec<f64> = (0..4).map(|i| before[i].max(after[i])).collect();
+    // The walk with speed, sway and arm swing changed at several moments of the cycle.
+    for change_at in [130usize, 157, 171, 199] {
+        let mut walker = Walker::new(&base).unwrap();
+        let mut frames = Vec::new();
+        for i in 0..600 {
+            if i == change_at {
+                assert!(walker.set_params(&changed_params).unwrap());
+            }
+            walker.advance(1.0 / fps);
+            frames.push(walker.frame(i as u64));
+        }
+        let changed = max_steps(&frames);
+        for i in 0..4 {
+            assert!(changed[i] <= usual[i] * 1.1, "joint {i}: {:.3}°/frame after a change at {change_at} vs usual {:.3}", changed[i], usual[i]);
+        }
+        let checks = analysis::checks(&frames);
+        assert!(checks.foot_skate_mm < 0.5 && checks.reach_failures == 0, "{checks:?}");
+        // And the change took: the walk is faster by the end.
+        let speed = (frames[599].pelvis.x - frames[500].pelvis.x) / (99.0 / fps);
+        assert!(speed > 1.4, "speed after the change {speed}");
+    }
+}
+
+#[test]
+fn knee_stays_forward_with_high_knee_lift_and_steep_stairs() {
+    let high = config::load_text("", "t", &["legs.knee_lift_cm=25".into()]).unwrap();
+    let steep = config::load_text(
+        "",
+        "t",
+        &["terrain.kind=stairs".into(), "terrain.rise_m=0.22".into(), "terrain.run_m=0.34".into(), "walk.speed_mps=0.5".into(), "walk.stride_m=0.68".into()],
+    )
+    .unwrap();
+    for (name, p) in [("knee lift", high), ("steep stairs", steep)] {
+        let run = analysis::run(&p, 12.0, 60.0).unwrap();
+        for f in &run.frames {
+            for l in &f.legs {
+                let a = (l.ankle - l.hip).normalize();
+                let forward = (glam::DVec3::X - a * a.x).normalize();
+                assert!(forward.dot(l.knee_swivel) > 0.7, "{name}: knee turned back at frame {}", f.frame);
+                assert!(l.knee_flex_deg >= 0.0);
+            }
+        }
+        let checks = analysis::checks(&run.frames);
+        assert_eq!(checks.non_finite_values, 0);
+        assert!(checks.terrain_penetration_mm < 1.0, "{name}: {checks:?}");
+    }
+}
+
+#[test]
+fn long_frames_are_split_and_no_phase_end_is_skipped() {
+    // 5 frames a second: each frame crosses phase boundaries; the walk must match the one
+    // run at 300 fps at the shared instants.
+    let p = default_params();
+    let mut coarse = Walker::new(&p).unwrap();
+    let mut fine = Walker::new(&p).unwrap();
+    for _ in 0..20 {
+        coarse.advance(0.2);
+        for _ in 0..60 {
+            fine.advance(0.2 / 60.0);
+        }
+        let (a, b) = (coarse.frame(0), fine.frame(0));
+        for side in 0..2 {
+            assert_eq!(a.legs[side].leg_phase, b.legs[side].leg_phase);
+            assert!(a.legs[side].heel.distance(b.legs[side].heel) < 1e-6);
+            assert!((a.legs[side].knee_flex_deg - b.legs[side].knee_flex_deg).abs() < 1e-6);
+        }
+    }
+    assert_eq!(coarse.footfalls().len(), fine.footfalls().len());
+}
