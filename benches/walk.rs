@@ -1,1 +1,76 @@
-fn main(){}
+//! Speed of the walk model: one full-body frame update, the update that plans a swing at
+//! toe-off, and writing the joint table. Figures and machine in `benches/README.md`.
+
+use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
+use gaitlab::config::presets;
+use gaitlab::model::body::Side;
+use gaitlab::model::walk::Walker;
+use gaitlab::model::walk::leg::LegPhase;
+use gaitlab::output::joint_table;
+use std::hint::black_box;
+
+fn default_walker() -> Walker {
+    let params = presets::params("default").unwrap().unwrap();
+    let mut w = Walker::new(&params).unwrap();
+    // Past start-up.
+    for _ in 0..200 {
+        w.advance(1.0 / 60.0);
+    }
+    w
+}
+
+fn frame_update(c: &mut Criterion) {
+    let mut w = default_walker();
+    c.bench_function("frame update (pelvis, legs IK, trunk, arms, pose) at 60 fps", |b| {
+        b.iter(|| {
+            w.advance(black_box(1.0 / 60.0));
+            black_box(w.pose().position[0]);
+        });
+    });
+}
+
+fn toe_off_planning(c: &mut Criterion) {
+    for name in ["default", "stairs_up"] {
+        let params = presets::params(name).unwrap().unwrap();
+        let mut w = Walker::new(&params).unwrap();
+        let step = 0.001 * w.resolved().cycle_s;
+        // Walk until one small step short of a right toe-off, on the stairs if there are any.
+        let mut seen_toe_offs = 0;
+        loop {
+            let mut probe = w.clone();
+            probe.advance(step);
+            if w.leg(Side::Right).phase == LegPhase::HeelRise && probe.leg(Side::Right).phase == LegPhase::Swing {
+                seen_toe_offs += 1;
+                if seen_toe_offs == 3 {
+                    break;
+                }
+            }
+            w = probe;
+        }
+        c.bench_function(&format!("update with toe-off swing planning ({name})"), |b| {
+            b.iter_batched(
+                || w.clone(),
+                |mut walker| {
+                    walker.advance(step);
+                    walker
+                },
+                BatchSize::SmallInput,
+            );
+        });
+    }
+}
+
+fn joint_table_rows(c: &mut Criterion) {
+    let mut w = default_walker();
+    let mut line = String::with_capacity(512);
+    c.bench_function("frame update + joint table row", |b| {
+        b.iter(|| {
+            w.advance(1.0 / 60.0);
+            joint_table::format_row(&w.frame(0), &mut line);
+            black_box(line.len());
+        });
+    });
+}
+
+criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows);
+criterion_main!(benches);

@@ -132,7 +132,9 @@ impl Loader {
                 continue;
             }
             let DeValue::Table(table) = group_value.get_ref() else {
-                self.error(&at, group, format!("expected a table [{group}], found a {}", group_value.get_ref().type_str()));
+                let found = group_value.get_ref().type_str();
+                let article = if found.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" };
+                self.error(&at, group, format!("expected a table [{group}], found {article} {found}"));
                 continue;
             };
             for (key, value) in table {
@@ -499,6 +501,6 @@ mod tests {
         assert_eq!(p.walk.speed_mps, 1.5);
         assert_eq!(p.terrain.kind, TerrainChoice::Slope);
         let e = load_text("", "c.toml", &["walk.speed_mps=fast".into()]).unwrap_err();
-        assert!(e.to_string().starts_with("--set #1:1:15: walk.speed_mps: expected a number"), "{e}");
+        assert!(e.to_string().starts_with("--set #1:1:16: walk.speed_mps: expected a number"), "{e}");
     }
 }

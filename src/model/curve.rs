@@ -187,9 +187,14 @@ impl Curve {
         }
         let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
         let mut t = (x - x0) / (x3 - x0);
-        for _ in 0..40 {
+        // Handles at the thirds make x(t) linear: the first guess is the answer.
+        let third = (x3 - x0) / 3.0;
+        if ((x1 - x0) - third).abs() <= 1e-15 * (1.0 + x3.abs()) && ((x3 - x2) - third).abs() <= 1e-15 * (1.0 + x3.abs()) {
+            return t;
+        }
+        for _ in 0..60 {
             let fx = bezier(x0, x1, x2, x3, t) - x;
-            if fx.abs() < 1e-14 {
+            if fx == 0.0 {
                 break;
             }
             if fx > 0.0 {
@@ -199,8 +204,11 @@ impl Curve {
             }
             let d = bezier_d(x0, x1, x2, x3, t);
             let newton = t - fx / d;
-            t = if d > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-            if hi - lo < 1e-15 {
+            let next = if d > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+            // 1e-13 in t is far below the 1e-9 the curves are checked to.
+            let done = (next - t).abs() < 1e-13 || hi - lo < 1e-13;
+            t = next;
+            if done {
                 break;
             }
         }

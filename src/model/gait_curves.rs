@@ -251,7 +251,8 @@ mod tests {
             (0..=1000).map(|i| i as f64 / 1000.0).max_by(|a, b| curve.eval(*a).total_cmp(&curve.eval(*b))).unwrap()
         };
         assert!((argmax(CurveName::PelvisObliquity) - 0.15).abs() < 0.01);
-        assert!(argmax(CurveName::PelvisRotation) < 0.01);
+        let rotation_peak = argmax(CurveName::PelvisRotation);
+        assert!(!(0.01..=0.99).contains(&rotation_peak), "{rotation_peak}");
         assert!((argmax(CurveName::PelvisLateral) - 0.31).abs() < 0.01);
         assert!((argmax(CurveName::Shoulder) - 0.5).abs() < 0.01);
         assert!((argmax(CurveName::SwingHeelHeight) - 0.22).abs() < 0.02);

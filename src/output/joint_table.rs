@@ -46,13 +46,27 @@ pub const COLUMNS: &[&str] = &[
     "terrain_y_under_heel_l",
 ];
 
-/// Appends `x` with `decimals` places; a value that rounds to zero is written without a
-/// minus sign so that −0.0000 and 0.0000 cannot differ between runs.
+/// Appends `x` with `decimals` places (at most 6), rounded half away from zero from the
+/// binary value; a value that rounds to zero is written without a minus sign so −0.0000 and
+/// 0.0000 cannot differ between runs. Integer arithmetic instead of `format!("{:.6}")`, which
+/// costs about a quarter of a microsecond a number and made the CSV the bottleneck.
 fn push_fixed(line: &mut String, x: f64, decimals: usize) {
-    let start = line.len();
-    let _ = write!(line, "{x:.decimals$}");
-    if line[start..].starts_with('-') && line[start + 1..].bytes().all(|b| b == b'0' || b == b'.') {
-        line.remove(start);
+    const POW: [f64; 7] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6];
+    let scaled = (x * POW[decimals]).round();
+    if !scaled.is_finite() || scaled.abs() >= 9.0e15 {
+        let _ = write!(line, "{x:.decimals$}");
+        return;
+    }
+    let mut n = scaled as i64;
+    if n < 0 {
+        line.push('-');
+        n = -n;
+    }
+    let unit = 10i64.pow(decimals as u32);
+    let _ = write!(line, "{}", n / unit);
+    if decimals > 0 {
+        let frac = n % unit;
+        let _ = write!(line, ".{frac:0decimals$}");
     }
 }
 

@@ -388,19 +388,12 @@ impl Walker {
                 let ankle_at = |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
                 let limit = r.reach_margin * dims.leg_reach();
                 let mut angle = curve_angle;
-                if hip.distance(ankle_at(angle)) > limit && hip.distance(ankle_at(MAX_HEEL_RISE)) <= limit {
-                    // The hip has moved past what the curve's heel rise lets the leg reach:
-                    // roll further over the toes, just enough (bisection on a monotone distance).
-                    let (mut lo, mut hi) = (angle, MAX_HEEL_RISE);
-                    for _ in 0..40 {
-                        let mid = 0.5 * (lo + hi);
-                        if hip.distance(ankle_at(mid)) > limit {
-                            lo = mid;
-                        } else {
-                            hi = mid;
-                        }
+                if hip.distance(ankle_at(angle)) > limit {
+                    // The hip has moved past what the curve's heel rise lets the leg reach: roll
+                    // further over the toes, just enough.
+                    if let Some(reaching) = heel_rise_to_reach(leg.anchor, ff, dims.ball_local(), hip, limit, angle) {
+                        angle = reaching;
                     }
-                    angle = hi;
                 }
                 LegTarget {
                     ankle: ankle_at(angle),
@@ -918,6 +911,43 @@ pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTa
     // ground it just left is what a literal linear return would draw.
     let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
     LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// The least heel-rise angle ≥ `from` (rad) at which the ankle, swinging about the toe joint
+/// `ball`, comes within `limit` of `hip`; `None` if no angle up to [`MAX_HEEL_RISE`] does.
+///
+/// In the foot's yaw frame the ankle is ball − Rz(g − β)·b, so the squared distance to the hip
+/// is |d|² + |b|² + 2 d·Rz(θ)·b with d = hip − ball, θ = g − β: a sinusoid in θ, solved in
+/// closed form (A cos θ + B sin θ = K) instead of by bisection on every frame.
+#[must_use]
+pub fn heel_rise_to_reach(ball: DVec3, footfall: &Footfall, ball_local: DVec3, hip: DVec3, limit: f64, from: f64) -> Option<f64> {
+    let d = DQuat::from_rotation_y(-footfall.yaw) * (hip - ball);
+    let b = ball_local;
+    let a_coef = d.x * b.x + d.y * b.y;
+    let b_coef = d.y * b.x - d.x * b.y;
+    let k = 0.5 * (limit * limit - d.length_squared() - b.length_squared()) - d.z * b.z;
+    let amplitude = a_coef.hypot(b_coef);
+    if amplitude < 1e-12 || (k / amplitude).abs() > 1.0 {
+        return None;
+    }
+    let phi = b_coef.atan2(a_coef);
+    let spread = (k / amplitude).acos();
+    // Both roots in θ, mapped to β = g − θ and brought into (from − π, from + π].
+    let g = footfall.ground_angle;
+    let wrap = |beta: f64| {
+        let mut x = beta;
+        while x <= from - std::f64::consts::PI {
+            x += std::f64::consts::TAU;
+        }
+        while x > from + std::f64::consts::PI {
+            x -= std::f64::consts::TAU;
+        }
+        x
+    };
+    [wrap(g - (phi + spread)), wrap(g - (phi - spread))]
+        .into_iter()
+        .filter(|beta| *beta >= from - 1e-12 && *beta <= MAX_HEEL_RISE)
+        .min_by(f64::total_cmp)
 }
 
 /// IK for one leg toward `target`, with the knee toward the walking direction turned by the

@@ -49,10 +49,10 @@ pub fn trunk_bend(lengths: [f64; 3], obliquity: f64) -> f64 {
         return -obliquity; // degenerate trunk: lean the upper segments back by θ
     }
     let mut side = 0;
-    for _ in 0..60 {
+    for _ in 0..40 {
         let c = (a * fb - b * fa) / (fb - fa);
         let fc = f(c);
-        if fc.abs() < 1e-14 {
+        if fc.abs() < 1e-13 {
             return c;
         }
         if fc * fb < 0.0 {
@@ -65,7 +65,7 @@ pub fn trunk_bend(lengths: [f64; 3], obliquity: f64) -> f64 {
         }
         b = c;
         fb = fc;
-        if (b - a).abs() < 1e-14 {
+        if (b - a).abs() < 1e-12 {
             break;
         }
     }

@@ -1,0 +1,146 @@
+//! The `gaitlab` binary as scripts use it: exit codes, messages, files.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn gaitlab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gaitlab")).args(args).output().expect("the binary runs")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gaitlab-test-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn every_bad_config_exits_2_and_names_the_place() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_configs");
+    let mut seen = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let body = std::fs::read_to_string(&path).unwrap();
+        let expect = body.lines().next().and_then(|l| l.strip_prefix("# expect: ")).expect("first line states the expected message");
+        let (place, rest) = expect.split_once(": ").unwrap();
+        let (key, message) = rest.split_once(": ").unwrap();
+        let shown = path.display().to_string();
+        let out = gaitlab(&["check", &shown]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{shown}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{shown}: {stderr}");
+        let wanted = if key.is_empty() { format!("{shown}:{place}: {message}") } else { format!("{shown}:{place}: {key}: {message}") };
+        assert!(stderr.contains(&wanted), "{shown}:\n  wanted {wanted}\n  got    {stderr}");
+        assert!(text(&out.stdout).is_empty(), "{shown}: nothing on stdout for a bad config");
+        seen += 1;
+    }
+    assert!(seen >= 15, "only {seen} bad configs");
+}
+
+#[test]
+fn check_accepts_every_shipped_config() {
+    let mut args = vec!["check".to_string()];
+    for entry in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("configs")).unwrap() {
+        args.push(entry.unwrap().path().display().to_string());
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = gaitlab(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout).lines().filter(|l| l.starts_with("ok: ")).count(), args.len() - 1);
+}
+
+#[test]
+fn check_reports_bad_set_and_missing_file() {
+    let out = gaitlab(&["check", "configs/default.toml", "--set", "walk.speed_mps=3"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("--set #1:1:16: walk.speed_mps: 3 is out of range"), "{}", text(&out.stderr));
+    let out = gaitlab(&["check", "no/such/file.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).starts_with("no/such/file.toml:1:1: cannot read the config"), "{}", text(&out.stderr));
+    let out = gaitlab(&["simulate", "configs/default.toml", "--fps", "nine"]);
+    assert_eq!(out.status.code(), Some(2), "usage errors exit 2");
+}
+
+#[test]
+fn simulate_writes_the_interface_columns_identically_every_run() {
+    let dir = temp_dir("simulate");
+    let a = dir.join("a.csv");
+    let b = dir.join("b.csv");
+    for out in [&a, &b] {
+        let o = gaitlab(&["simulate", "configs/rough.toml", "--cycles", "3", "--fps", "50", "--out", &out.display().to_string()]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    }
+    let (x, y) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    assert_eq!(x, y, "same config, same bytes");
+    let csv = text(&x);
+    let mut lines = csv.lines();
+    let header = lines.next().unwrap();
+    assert!(header.starts_with(
+        "frame,time_s,phase_r,phase_l,support,pelvis_x,pelvis_y,pelvis_z,pelvis_tilt_deg,pelvis_obliquity_deg,pelvis_rotation_deg,hip_flex_r_deg,hip_abd_r_deg,knee_flex_r_deg,ankle_dorsi_r_deg,hip_flex_l_deg,hip_abd_l_deg,knee_flex_l_deg,ankle_dorsi_l_deg,heel_r_x,heel_r_y,heel_r_z,toe_r_x,toe_r_y,toe_r_z,heel_l_x,heel_l_y,heel_l_z,toe_l_x,toe_l_y,toe_l_z,shoulder_flex_r_deg,elbow_flex_r_deg,shoulder_flex_l_deg,elbow_flex_l_deg,terrain_y_under_heel_r,terrain_y_under_heel_l"
+    ));
+    let rows: Vec<&str> = lines.collect();
+    // 3 cycles at 50 fps plus the start frame.
+    let cycle_s: f64 = 120.0 / 110.397;
+    assert_eq!(rows.len(), (3.0 * cycle_s * 50.0_f64).round() as usize + 1);
+    for row in &rows {
+        let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells.len(), 37);
+        assert!(["double", "right", "left"].contains(&cells[4]), "{row}");
+        for c in cells.iter().enumerate().filter(|(i, _)| *i != 4).map(|(_, c)| c) {
+            let v: f64 = c.parse().unwrap_or_else(|_| panic!("{c} in {row}"));
+            assert!(v.is_finite());
+        }
+    }
+    // Stdout gives the same bytes.
+    let o = gaitlab(&["simulate", "configs/rough.toml", "--cycles", "3", "--fps", "50"]);
+    assert_eq!(o.stdout, x);
+    // No temporary files are left beside the output.
+    let names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+}
+
+#[test]
+fn simulate_into_an_unwritable_place_fails_with_1_and_leaves_nothing() {
+    let dir = temp_dir("unwritable");
+    let target = dir.join("missing-dir").join("walk.csv");
+    let o = gaitlab(&["simulate", "configs/default.toml", "--cycles", "1", "--out", &target.display().to_string()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stderr).contains("cannot write"), "{}", text(&o.stderr));
+    assert!(!target.exists());
+}
+
+#[test]
+fn init_prints_the_default_config_and_presets_match_the_configs_folder() {
+    let out = gaitlab(&["init"]);
+    assert_eq!(out.status.code(), Some(0));
+    let default = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml")).unwrap();
+    assert_eq!(text(&out.stdout), default, "configs/default.toml is `gaitlab init`'s output; regenerate it");
+    // Every preset's init output is itself a valid config giving the same walk parameters.
+    let listed = text(&gaitlab(&["presets"]).stdout);
+    let names: Vec<&str> = listed.lines().map(|l| l.split_whitespace().next().unwrap()).collect();
+    let mut files: Vec<String> = std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("configs"))
+        .unwrap()
+        .map(|e| e.unwrap().path().file_stem().unwrap().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    let mut sorted = names.clone();
+    sorted.sort();
+    assert_eq!(sorted, files, "every file in configs/ is a preset and every preset a file");
+    for name in names {
+        let out = gaitlab(&["init", "--preset", name]);
+        assert_eq!(out.status.code(), Some(0));
+        let rendered = gaitlab::config::parse_str(&text(&out.stdout), "init").unwrap();
+        let original = gaitlab::config::presets::params(name).unwrap().unwrap();
+        assert_eq!(rendered.resolve(), original.resolve(), "{name}");
+    }
+    let out = gaitlab(&["init", "--preset", "eldery"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("did you mean `elderly`?"));
+}
