@@ -8,6 +8,7 @@ use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::output::joint_table;
 use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 fn default_walker() -> Walker {
     let params = presets::params("default").unwrap().unwrap();
@@ -20,10 +21,31 @@ fn default_walker() -> Walker {
 }
 
 fn frame_update(c: &mut Criterion) {
+    // A plain frame: no leg phase boundary inside it. The frames that cross one carry the
+    // per-step planning (benchmarked below) and are walked through but not timed here.
+    let dt = 1.0 / 60.0;
     let mut w = default_walker();
     c.bench_function("frame update (pelvis, legs IK, trunk, arms, pose) at 60 fps", |b| {
+        b.iter_custom(|iters| {
+            let mut timed = Duration::ZERO;
+            let mut counted = 0;
+            while counted < iters {
+                let before = [w.leg(Side::Right).phase_serial, w.leg(Side::Left).phase_serial];
+                let start = Instant::now();
+                w.advance(black_box(dt));
+                let took = start.elapsed();
+                if before == [w.leg(Side::Right).phase_serial, w.leg(Side::Left).phase_serial] {
+                    timed += took;
+                    counted += 1;
+                }
+            }
+            timed
+        });
+    });
+    let mut w = default_walker();
+    c.bench_function("walking on: mean frame incl. per-step planning at 60 fps", |b| {
         b.iter(|| {
-            w.advance(black_box(1.0 / 60.0));
+            w.advance(black_box(dt));
             black_box(w.pose().position[0]);
         });
     });

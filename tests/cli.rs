@@ -28,7 +28,11 @@ fn every_bad_config_exits_2_and_names_the_place() {
             continue;
         }
         let body = std::fs::read_to_string(&path).unwrap();
-        let expect = body.lines().next().and_then(|l| l.strip_prefix("# expect: ")).expect("first line states the expected message");
+        let expect = body
+            .lines()
+            .next()
+            .and_then(|l| l.strip_prefix("# expect: "))
+            .expect("first line states the expected message");
         let (place, rest) = expect.split_once(": ").unwrap();
         let (key, message) = rest.split_once(": ").unwrap();
         let shown = path.display().to_string();
@@ -36,7 +40,11 @@ fn every_bad_config_exits_2_and_names_the_place() {
         let stderr = text(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{shown}: {stderr}");
         assert!(!stderr.contains("panicked"), "{shown}: {stderr}");
-        let wanted = if key.is_empty() { format!("{shown}:{place}: {message}") } else { format!("{shown}:{place}: {key}: {message}") };
+        let wanted = if key.is_empty() {
+            format!("{shown}:{place}: {message}")
+        } else {
+            format!("{shown}:{place}: {key}: {message}")
+        };
         assert!(stderr.contains(&wanted), "{shown}:\n  wanted {wanted}\n  got    {stderr}");
         assert!(text(&out.stdout).is_empty(), "{shown}: nothing on stdout for a bad config");
         seen += 1;
@@ -74,7 +82,16 @@ fn simulate_writes_the_interface_columns_identically_every_run() {
     let a = dir.join("a.csv");
     let b = dir.join("b.csv");
     for out in [&a, &b] {
-        let o = gaitlab(&["simulate", "configs/rough.toml", "--cycles", "3", "--fps", "50", "--out", &out.display().to_string()]);
+        let o = gaitlab(&[
+            "simulate",
+            "configs/rough.toml",
+            "--cycles",
+            "3",
+            "--fps",
+            "50",
+            "--out",
+            &out.display().to_string(),
+        ]);
         assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     }
     let (x, y) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
@@ -102,7 +119,8 @@ fn simulate_writes_the_interface_columns_identically_every_run() {
     let o = gaitlab(&["simulate", "configs/rough.toml", "--cycles", "3", "--fps", "50"]);
     assert_eq!(o.stdout, x);
     // No temporary files are left beside the output.
-    let names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let names: Vec<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     assert_eq!(names.len(), 2, "{names:?}");
 }
 

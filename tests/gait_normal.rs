@@ -6,9 +6,9 @@ use gaitlab::analysis;
 use gaitlab::config::{self, presets};
 use gaitlab::model::body::Side;
 use gaitlab::model::params::WalkParams;
+use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::frame::{Frame, Support};
 use gaitlab::model::walk::leg::LegPhase;
-use gaitlab::model::walk::Walker;
 
 fn default_params() -> WalkParams {
     presets::params("default").unwrap().unwrap()
@@ -26,8 +26,8 @@ fn default_walk_has_normal_timing_stride_and_cadence() {
     let run = analysis::run(&p, 12.0, 300.0).unwrap();
     let steady = &run.frames[run.frames.len() / 12..];
     for side in Side::BOTH {
-        let stance = steady.iter().filter(|f| f.legs[side.index()].leg_phase.is_stance()).count() as f64
-            / steady.len() as f64;
+        let stance =
+            steady.iter().filter(|f| f.legs[side.index()].leg_phase.is_stance()).count() as f64 / steady.len() as f64;
         assert!((stance - 0.62).abs() < 0.005, "{side:?} stance {stance}");
     }
     // Double support exactly in the spec's windows (0–0.12 and 0.50–0.62 of the right cycle),
@@ -81,10 +81,10 @@ fn default_walk_measures_like_a_normal_adult_walk() {
 
 /// Frames of one leg, by its own phase.
 fn at_phase(frames: &[Frame], side: usize, phase: f64) -> &Frame {
-    frames.iter().min_by(|a, b| {
-        (a.legs[side].phase - phase).abs().total_cmp(&(b.legs[side].phase - phase).abs())
-    })
-    .unwrap()
+    frames
+        .iter()
+        .min_by(|a, b| (a.legs[side].phase - phase).abs().total_cmp(&(b.legs[side].phase - phase).abs()))
+        .unwrap()
 }
 
 #[test]
@@ -96,7 +96,12 @@ fn legs_mirror_each_other_half_a_cycle_apart() {
         let r = at_phase(window, 0, q);
         let l = at_phase(window, 1, q);
         let (r, l) = (&r.legs[0], &l.legs[1]);
-        assert!((r.knee_flex_deg - l.knee_flex_deg).abs() < 1.0, "knee at {q}: {} vs {}", r.knee_flex_deg, l.knee_flex_deg);
+        assert!(
+            (r.knee_flex_deg - l.knee_flex_deg).abs() < 1.0,
+            "knee at {q}: {} vs {}",
+            r.knee_flex_deg,
+            l.knee_flex_deg
+        );
         assert!((r.hip_flex_deg - l.hip_flex_deg).abs() < 1.0, "hip at {q}");
         assert!((r.ankle_dorsi_deg - l.ankle_dorsi_deg).abs() < 1.0, "ankle at {q}");
         assert!((r.heel.z + l.heel.z).abs() < 0.01, "heel z mirrors at {q}");
@@ -110,7 +115,9 @@ fn swing_foot_lands_where_the_footfall_was_planned() {
         for side in 0..2 {
             let mut landed = 0;
             for w in run.frames.windows(2) {
-                if w[0].legs[side].leg_phase == LegPhase::Swing && w[1].legs[side].leg_phase == LegPhase::LoadingResponse {
+                if w[0].legs[side].leg_phase == LegPhase::Swing
+                    && w[1].legs[side].leg_phase == LegPhase::LoadingResponse
+                {
                     // The heel is held in loading response; the footfall is the one whose
                     // heel is nearest.
                     let heel = w[1].legs[side].heel;
@@ -159,7 +166,9 @@ fn stairs_are_cleared_and_treads_met_flat() {
         // Foot flat on the tread at the end of loading response: heel and toe tip on the ground.
         for w in run.frames.windows(2) {
             for side in 0..2 {
-                if w[0].legs[side].leg_phase == LegPhase::LoadingResponse && w[1].legs[side].leg_phase == LegPhase::Midstance {
+                if w[0].legs[side].leg_phase == LegPhase::LoadingResponse
+                    && w[1].legs[side].leg_phase == LegPhase::Midstance
+                {
                     let l = &w[1].legs[side];
                     assert!((l.heel.y - terrain.height(l.heel.x)).abs() < 1e-3, "{name}");
                     assert!((l.toe.y - terrain.height(l.toe.x)).abs() < 1e-3, "{name}: toe {:.4}", l.toe.y);
@@ -208,7 +217,8 @@ fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
     let fps = 60.0;
     let base = default_params();
     let changed_params =
-        config::load_text("[walk]\nspeed_mps = 1.45\nsway = 1.4\n[arms]\nshoulder_range_deg = 35.0\n", "live", &[]).unwrap();
+        config::load_text("[walk]\nspeed_mps = 1.45\nsway = 1.4\n[arms]\nshoulder_range_deg = 35.0\n", "live", &[])
+            .unwrap();
     // The usual per-frame change of each joint, before and after: the larger of a walk at
     // the old and one at the new parameters.
     let usual_of = |p: &WalkParams| {
@@ -236,7 +246,12 @@ fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
         }
         let changed = max_steps(&frames);
         for i in 0..4 {
-            assert!(changed[i] <= usual[i] * 1.1, "joint {i}: {:.3}°/frame after a change at {change_at} vs usual {:.3}", changed[i], usual[i]);
+            assert!(
+                changed[i] <= usual[i] * 1.1,
+                "joint {i}: {:.3}°/frame after a change at {change_at} vs usual {:.3}",
+                changed[i],
+                usual[i]
+            );
         }
         let checks = analysis::checks(&frames);
         assert!(checks.foot_skate_mm < 0.5 && checks.reach_failures == 0, "{checks:?}");
@@ -252,7 +267,13 @@ fn knee_stays_forward_with_high_knee_lift_and_steep_stairs() {
     let steep = config::load_text(
         "",
         "t",
-        &["terrain.kind=stairs".into(), "terrain.rise_m=0.22".into(), "terrain.run_m=0.34".into(), "walk.speed_mps=0.5".into(), "walk.stride_m=0.68".into()],
+        &[
+            "terrain.kind=stairs".into(),
+            "terrain.rise_m=0.22".into(),
+            "terrain.run_m=0.34".into(),
+            "walk.speed_mps=0.5".into(),
+            "walk.stride_m=0.68".into(),
+        ],
     )
     .unwrap();
     for (name, p) in [("knee lift", high), ("steep stairs", steep)] {

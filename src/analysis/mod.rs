@@ -123,9 +123,24 @@ pub fn checks(frames: &[Frame]) -> Checks {
 /// Counts non-finite numbers in a frame.
 #[must_use]
 pub fn non_finite_in(f: &Frame) -> u64 {
-    let mut values = vec![f.time_s, f.pelvis.x, f.pelvis.y, f.pelvis.z, f.pelvis_tilt_deg, f.pelvis_obliquity_deg, f.pelvis_rotation_deg];
+    let mut values = vec![
+        f.time_s,
+        f.pelvis.x,
+        f.pelvis.y,
+        f.pelvis.z,
+        f.pelvis_tilt_deg,
+        f.pelvis_obliquity_deg,
+        f.pelvis_rotation_deg,
+    ];
     for l in &f.legs {
-        values.extend([l.hip_flex_deg, l.hip_abd_deg, l.knee_flex_deg, l.ankle_dorsi_deg, l.shoulder_flex_deg, l.elbow_flex_deg]);
+        values.extend([
+            l.hip_flex_deg,
+            l.hip_abd_deg,
+            l.knee_flex_deg,
+            l.ankle_dorsi_deg,
+            l.shoulder_flex_deg,
+            l.elbow_flex_deg,
+        ]);
         for v in [l.hip, l.knee, l.ankle, l.heel, l.toe] {
             values.extend([v.x, v.y, v.z]);
         }
@@ -167,14 +182,9 @@ pub struct CycleSummary {
 /// Splits `frames` into cycles at right heel strikes and summarises each complete one.
 #[must_use]
 pub fn cycle_summaries(frames: &[Frame]) -> Vec<CycleSummary> {
-    let starts: Vec<usize> = (0..frames.len())
-        .filter(|&i| i == 0 || frames[i].legs[0].phase < frames[i - 1].legs[0].phase)
-        .collect();
-    starts
-        .windows(2)
-        .enumerate()
-        .map(|(cycle, w)| summarise(cycle, &frames[w[0]..w[1]], &frames[w[1]]))
-        .collect()
+    let starts: Vec<usize> =
+        (0..frames.len()).filter(|&i| i == 0 || frames[i].legs[0].phase < frames[i - 1].legs[0].phase).collect();
+    starts.windows(2).enumerate().map(|(cycle, w)| summarise(cycle, &frames[w[0]..w[1]], &frames[w[1]])).collect()
 }
 
 fn summarise(cycle: usize, f: &[Frame], next: &Frame) -> CycleSummary {
@@ -187,10 +197,16 @@ fn summarise(cycle: usize, f: &[Frame], next: &Frame) -> CycleSummary {
     let stride_m = next.pelvis.x - f[0].pelvis.x;
     let per_leg = |i: usize| {
         let stance = f.iter().filter(|fr| fr.legs[i].leg_phase.is_stance()).count() as f64 / n * 100.0;
-        let knee_stance =
-            f.iter().filter(|fr| fr.legs[i].leg_phase.is_stance()).map(|fr| fr.legs[i].knee_flex_deg).fold(0.0, f64::max);
-        let knee_swing =
-            f.iter().filter(|fr| !fr.legs[i].leg_phase.is_stance()).map(|fr| fr.legs[i].knee_flex_deg).fold(0.0, f64::max);
+        let knee_stance = f
+            .iter()
+            .filter(|fr| fr.legs[i].leg_phase.is_stance())
+            .map(|fr| fr.legs[i].knee_flex_deg)
+            .fold(0.0, f64::max);
+        let knee_swing = f
+            .iter()
+            .filter(|fr| !fr.legs[i].leg_phase.is_stance())
+            .map(|fr| fr.legs[i].knee_flex_deg)
+            .fold(0.0, f64::max);
         let hip = range(&mut f.iter().map(|fr| fr.legs[i].hip_flex_deg));
         let ankle = range(&mut f.iter().map(|fr| fr.legs[i].ankle_dorsi_deg));
         // Mid-swing: the middle half of the swing, where the foot passes the stance foot.

@@ -1,6 +1,6 @@
 //! The `gaitlab` command line: parsing (clap) and the headless commands.
 
-use crate::config::{self, presets, render, ConfigErrors};
+use crate::config::{self, ConfigErrors, presets, render};
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
 use crate::output::{joint_table, write_atomic};
@@ -95,7 +95,9 @@ pub fn run(cli: Cli) -> ExitCode {
             }
         },
         Some(Command::Check { configs, sets }) => check(&configs, &sets),
-        Some(Command::Simulate { config, cycles, fps, out, sets }) => simulate(&config, cycles, fps, out.as_deref(), &sets),
+        Some(Command::Simulate { config, cycles, fps, out, sets }) => {
+            simulate(&config, cycles, fps, out.as_deref(), &sets)
+        }
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));

@@ -13,12 +13,12 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::params::{TerrainChoice, WalkParams};
 use crate::model::walk::Walker;
-use schema::{did_you_mean, spec, Kind, ParamSpec, Value, GROUPS, PARAMS};
+use schema::{GROUPS, Kind, PARAMS, ParamSpec, Value, did_you_mean, spec};
 use std::collections::HashMap;
 use std::fmt;
 use std::path::Path;
-use toml::de::{DeTable, DeValue};
 use toml::Spanned;
+use toml::de::{DeTable, DeValue};
 
 /// One problem in a config, at a place.
 #[derive(Clone, Debug, PartialEq)]
@@ -230,7 +230,11 @@ impl Loader {
     pub fn apply_set(&mut self, assignment: &str, index: usize) {
         let label = format!("--set #{index}");
         let Some((key, value_text)) = assignment.split_once('=') else {
-            self.error(&(label, 1, 1), assignment, "expected KEY=VALUE, like walk.speed_mps=1.4 or terrain.kind=\"stairs\"");
+            self.error(
+                &(label, 1, 1),
+                assignment,
+                "expected KEY=VALUE, like walk.speed_mps=1.4 or terrain.kind=\"stairs\"",
+            );
             return;
         };
         let key = key.trim();
@@ -240,7 +244,11 @@ impl Loader {
         // Plain words are forgiven their missing quotes: `terrain.kind=stairs`.
         let quoted;
         let mut text = value_text.trim();
-        if !text.is_empty() && text.chars().all(|c| c.is_ascii_alphabetic() || c == '_') && text != "true" && text != "false" {
+        if !text.is_empty()
+            && text.chars().all(|c| c.is_ascii_alphabetic() || c == '_')
+            && text != "true"
+            && text != "false"
+        {
             quoted = format!("\"{text}\"");
             text = &quoted;
         }
@@ -348,7 +356,8 @@ fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
             match words.iter().find(|w| **w == s.as_ref()) {
                 Some(w) => Ok(Value::Word(w)),
                 None => {
-                    let hint = did_you_mean(s, words.iter().copied()).map_or(String::new(), |w| format!("; did you mean \"{w}\"?"));
+                    let hint = did_you_mean(s, words.iter().copied())
+                        .map_or(String::new(), |w| format!("; did you mean \"{w}\"?"));
                     Err(format!("\"{s}\" is not a choice{hint}; valid: {valid}"))
                 }
             }
@@ -389,13 +398,19 @@ pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
     if !(50.0..=160.0).contains(&cadence) {
         out.push((
             speed_keys("walk.cadence_spm"),
-            format!("cadence resolves to {cadence:.1} steps/min (speed {} m/s, stride {:.2} m); valid: 50 to 160", p.walk.speed_mps, r.stride_m),
+            format!(
+                "cadence resolves to {cadence:.1} steps/min (speed {} m/s, stride {:.2} m); valid: 50 to 160",
+                p.walk.speed_mps, r.stride_m
+            ),
         ));
     }
     if !(0.5..=2.0).contains(&r.stride_m) {
         out.push((
             speed_keys("walk.stride_m"),
-            format!("stride resolves to {:.2} m (speed {} m/s, cadence {cadence:.1}); valid: 0.5 to 2.0 m", r.stride_m, p.walk.speed_mps),
+            format!(
+                "stride resolves to {:.2} m (speed {} m/s, cadence {cadence:.1}); valid: 0.5 to 2.0 m",
+                r.stride_m, p.walk.speed_mps
+            ),
         ));
     }
     if r.toe_off - 0.5 < 0.02 {
@@ -417,7 +432,10 @@ pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
         ));
     }
     if 1.0 - r.toe_off < 0.25 {
-        out.push((vec!["legs.toe_off"], format!("toe_off ({:.3}) leaves a swing shorter than a quarter cycle; valid: up to 0.75", r.toe_off)));
+        out.push((
+            vec!["legs.toe_off"],
+            format!("toe_off ({:.3}) leaves a swing shorter than a quarter cycle; valid: up to 0.75", r.toe_off),
+        ));
     }
     if p.terrain.kind == TerrainChoice::Stairs {
         let foot = r.dims.foot_length * r.turnout.cos() + 2.0 * r.clearance + 0.01;
@@ -428,10 +446,10 @@ pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
             ));
         }
     }
-    if out.is_empty() {
-        if let Err(e) = Walker::new(p) {
-            out.push((vec!["walk.speed_mps"], e.0));
-        }
+    if out.is_empty()
+        && let Err(e) = Walker::new(p)
+    {
+        out.push((vec!["walk.speed_mps"], e.0));
     }
     out
 }
@@ -496,8 +514,12 @@ mod tests {
 
     #[test]
     fn set_overrides_and_accepts_bare_words() {
-        let p = load_text("[walk]\nspeed_mps = 1.2\n", "c.toml", &["walk.speed_mps=1.5".into(), "terrain.kind=slope".into()])
-            .unwrap();
+        let p = load_text(
+            "[walk]\nspeed_mps = 1.2\n",
+            "c.toml",
+            &["walk.speed_mps=1.5".into(), "terrain.kind=slope".into()],
+        )
+        .unwrap();
         assert_eq!(p.walk.speed_mps, 1.5);
         assert_eq!(p.terrain.kind, TerrainChoice::Slope);
         let e = load_text("", "c.toml", &["walk.speed_mps=fast".into()]).unwrap_err();

@@ -1,7 +1,7 @@
 //! The presets: the config files in `configs/`, embedded in the binary. The first line of
 //! each is `# preset: <description>`.
 
-use crate::config::{parse_str, ConfigErrors};
+use crate::config::{ConfigErrors, parse_str};
 use crate::model::params::WalkParams;
 
 /// Every preset: (name, file text). `default` is what the lab opens without a config.

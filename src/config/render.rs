@@ -1,7 +1,7 @@
 //! Writes a complete, commented config (`gaitlab init`): every key with its doc line, unit
 //! and valid range; derived keys commented out with the value they derive to.
 
-use crate::config::schema::{Kind, Value, GROUPS, PARAMS};
+use crate::config::schema::{GROUPS, Kind, PARAMS, Value};
 use crate::model::gait_curves::CurveName;
 use crate::model::params::{Resolved, WalkParams};
 
@@ -98,7 +98,8 @@ pub fn render(params: &WalkParams, title: &str) -> String {
     out.push_str("]\n");
     for (name, points) in &params.curves {
         out.push_str(&format!("\n[curves.{name}]\npoints = ["));
-        let pts: Vec<String> = points.iter().map(|(x, y)| format!("[{}, {}]", toml_number(*x), toml_number(*y))).collect();
+        let pts: Vec<String> =
+            points.iter().map(|(x, y)| format!("[{}, {}]", toml_number(*x), toml_number(*y))).collect();
         out.push_str(&pts.join(", "));
         out.push_str("]\n");
     }

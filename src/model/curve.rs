@@ -114,7 +114,7 @@ impl Curve {
     /// Checks point count, finiteness and monotone x.
     pub fn validate(&self) -> Result<(), CurveError> {
         let n = self.points.len();
-        if n < 4 || (n - 1) % 3 != 0 {
+        if n < 4 || !(n - 1).is_multiple_of(3) {
             return Err(CurveError::PointCount { curve: self.name.clone(), count: n });
         }
         for (index, p) in self.points.iter().enumerate() {
@@ -189,7 +189,9 @@ impl Curve {
         let mut t = (x - x0) / (x3 - x0);
         // Handles at the thirds make x(t) linear: the first guess is the answer.
         let third = (x3 - x0) / 3.0;
-        if ((x1 - x0) - third).abs() <= 1e-15 * (1.0 + x3.abs()) && ((x3 - x2) - third).abs() <= 1e-15 * (1.0 + x3.abs()) {
+        if ((x1 - x0) - third).abs() <= 1e-15 * (1.0 + x3.abs())
+            && ((x3 - x2) - third).abs() <= 1e-15 * (1.0 + x3.abs())
+        {
             return t;
         }
         for _ in 0..60 {
@@ -486,8 +488,7 @@ mod tests {
 
     #[test]
     fn non_monotone_x_names_the_curve() {
-        let e = Curve::from_pairs("swing_forward", &[(0.0, 0.0), (0.5, 0.0), (0.4, 1.0), (1.0, 1.0)])
-            .unwrap_err();
+        let e = Curve::from_pairs("swing_forward", &[(0.0, 0.0), (0.5, 0.0), (0.4, 1.0), (1.0, 1.0)]).unwrap_err();
         assert!(e.to_string().contains("swing_forward"), "{e}");
         assert!(matches!(e, CurveError::NonMonotoneX { index: 2, .. }));
         let e = Curve::from_pairs("c", &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]).unwrap_err();

@@ -146,9 +146,9 @@ impl CurveName {
             // Keys sample sin(2π(x − 0.06)) with its slopes.
             CurveName::PelvisLateral => &[
                 (0.0, -0.368, 5.86),
-                (0.06, 0.0, 6.283),
+                (0.06, 0.0, std::f64::consts::TAU),
                 (0.31, 1.0, 0.0),
-                (0.56, 0.0, -6.283),
+                (0.56, 0.0, -std::f64::consts::TAU),
                 (0.81, -1.0, 0.0),
                 (1.0, -0.368, 5.86),
             ],
@@ -259,7 +259,12 @@ mod tests {
         let heel_rise = CurveName::HeelRise.default_curve();
         assert!((heel_rise.eval(1.0) - 80.0).abs() < 1e-9);
         // Monotone where progress is meant.
-        for c in [CurveName::PelvisForwardDsMs, CurveName::PelvisForwardMsDs, CurveName::SwingForward, CurveName::PelvisVertical] {
+        for c in [
+            CurveName::PelvisForwardDsMs,
+            CurveName::PelvisForwardMsDs,
+            CurveName::SwingForward,
+            CurveName::PelvisVertical,
+        ] {
             let curve = c.default_curve();
             let ys: Vec<f64> = (0..=200).map(|i| curve.eval(i as f64 / 200.0)).collect();
             assert!(ys.windows(2).all(|w| w[1] >= w[0] - 1e-12), "{c}");

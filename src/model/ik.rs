@@ -129,7 +129,9 @@ mod tests {
     #[test]
     fn unreachable_targets_clamp_without_nan() {
         let root = DVec3::ZERO;
-        for target in [DVec3::new(0.0, -2.0, 0.0), DVec3::ZERO, DVec3::new(1e-14, 0.0, 0.0), DVec3::new(0.0, -0.001, 0.0)] {
+        for target in
+            [DVec3::new(0.0, -2.0, 0.0), DVec3::ZERO, DVec3::new(1e-14, 0.0, 0.0), DVec3::new(0.0, -0.001, 0.0)]
+        {
             let s = solve_two_bone(root, target, 0.43, 0.40, DVec3::X);
             assert!(!s.reached, "{target}");
             assert!(s.middle.is_finite() && s.end.is_finite());

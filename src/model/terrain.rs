@@ -146,10 +146,9 @@ impl Terrain {
         let (lo, hi) = (x0.min(x1), x0.max(x1));
         match &self.kind {
             TerrainKind::Flat => Vec::new(),
-            TerrainKind::Stairs { run_m, count, start_x_m, .. } => (0..*count)
-                .map(|i| start_x_m + i as f64 * run_m)
-                .filter(|x| (lo..=hi).contains(x))
-                .collect(),
+            TerrainKind::Stairs { run_m, count, start_x_m, .. } => {
+                (0..*count).map(|i| start_x_m + i as f64 * run_m).filter(|x| (lo..=hi).contains(x)).collect()
+            }
             TerrainKind::Slope { start_x_m, .. } => {
                 if (lo..=hi).contains(start_x_m) {
                     vec![*start_x_m]

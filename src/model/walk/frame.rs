@@ -2,8 +2,8 @@
 //! extra state the checks need.
 
 use crate::model::body::{Bone, Side};
-use crate::model::walk::leg::LegPhase;
 use crate::model::walk::Walker;
+use crate::model::walk::leg::LegPhase;
 use glam::{DQuat, DVec3};
 
 /// Which feet carry the body.

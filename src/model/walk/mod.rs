@@ -19,7 +19,7 @@ use crate::model::ik::solve_two_bone;
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
 use glam::{DQuat, DVec3};
-use leg::{foot_rotation, Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
+use leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
 use pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose, TrajectoryCurves};
 use std::fmt;
 use upper::{ArmHang, UpperBody};
@@ -129,7 +129,7 @@ impl Walker {
         let r = params.resolve();
         let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
         let terrain = Terrain::new(params.terrain.kind());
-        if !(r.toe_off > 0.5) {
+        if r.toe_off.is_nan() || r.toe_off <= 0.5 {
             return Err(ModelError(format!(
                 "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
                 r.toe_off
@@ -187,7 +187,8 @@ impl Walker {
             reached: true,
             target: LegTarget { ankle: DVec3::ZERO, pitch: 0.0, toe_bend: 0.0, yaw: 0.0, extra_heel_rise: 0.0 },
         };
-        let left_ball = left.heel + foot_rotation(left.yaw, left.ground_angle) * (dims.ball_local() - dims.heel_local());
+        let left_ball =
+            left.heel + foot_rotation(left.yaw, left.ground_angle) * (dims.ball_local() - dims.heel_local());
         let legs = [
             LegState {
                 side: Side::Right,
@@ -250,7 +251,7 @@ impl Walker {
 
     /// Advances the walk by `dt_s` seconds, in updates of at most [`MAX_UPDATE_CYCLES`].
     pub fn advance(&mut self, dt_s: f64) {
-        if !(dt_s > 0.0) || !dt_s.is_finite() {
+        if dt_s.is_nan() || dt_s <= 0.0 || !dt_s.is_finite() {
             return;
         }
         let total = dt_s / self.r.cycle_s;
@@ -378,14 +379,19 @@ impl Walker {
                 let ankle = leg.anchor - foot_rotation(ff.yaw, pitch) * dims.heel_local();
                 LegTarget { ankle, pitch, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
             }
-            LegPhase::Midstance => {
-                LegTarget { ankle: leg.anchor, pitch: ff.ground_angle, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
-            }
+            LegPhase::Midstance => LegTarget {
+                ankle: leg.anchor,
+                pitch: ff.ground_angle,
+                toe_bend: 0.0,
+                yaw: ff.yaw,
+                extra_heel_rise: 0.0,
+            },
             LegPhase::HeelRise => {
                 let s = ((q - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0);
                 let curve_angle =
                     (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
-                let ankle_at = |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
+                let ankle_at =
+                    |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
                 let limit = r.reach_margin * dims.leg_reach();
                 let mut angle = curve_angle;
                 if hip.distance(ankle_at(angle)) > limit {
@@ -429,7 +435,8 @@ impl Walker {
             LegPhase::Midstance => self.legs[i].anchor = pose.target.ankle,
             LegPhase::HeelRise => {
                 let leg = &mut self.legs[i];
-                leg.anchor = pose.target.ankle + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * dims.ball_local();
+                leg.anchor =
+                    pose.target.ankle + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * dims.ball_local();
                 leg.heel_rise_scale = (self.r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
             }
             LegPhase::Swing => self.plan_step(side, at, &pose),
@@ -515,7 +522,9 @@ impl Walker {
         }
         samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
         let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
-        samples.extend((1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0));
+        samples.extend(
+            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
+        );
         let mut dropped = 0.0;
         for _ in 0..6 {
             let mut worst: Option<(f64, KeyKind)> = None;
@@ -534,8 +543,11 @@ impl Walker {
                 let hip = self.pelvis_at(phase).hip(side.sign());
                 let d = hip - ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                let allowed =
-                    if horizontal < limit { ankle.y + (limit * limit - horizontal * horizontal).sqrt() } else { ankle.y };
+                let allowed = if horizontal < limit {
+                    ankle.y + (limit * limit - horizontal * horizontal).sqrt()
+                } else {
+                    ankle.y
+                };
                 let deficit = hip.y - allowed;
                 if deficit <= 0.0 {
                     continue;
@@ -920,7 +932,14 @@ pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTa
 /// is |d|² + |b|² + 2 d·Rz(θ)·b with d = hip − ball, θ = g − β: a sinusoid in θ, solved in
 /// closed form (A cos θ + B sin θ = K) instead of by bisection on every frame.
 #[must_use]
-pub fn heel_rise_to_reach(ball: DVec3, footfall: &Footfall, ball_local: DVec3, hip: DVec3, limit: f64, from: f64) -> Option<f64> {
+pub fn heel_rise_to_reach(
+    ball: DVec3,
+    footfall: &Footfall,
+    ball_local: DVec3,
+    hip: DVec3,
+    limit: f64,
+    from: f64,
+) -> Option<f64> {
     let d = DQuat::from_rotation_y(-footfall.yaw) * (hip - ball);
     let b = ball_local;
     let a_coef = d.x * b.x + d.y * b.y;
@@ -955,7 +974,9 @@ pub fn heel_rise_to_reach(ball: DVec3, footfall: &Footfall, ball_local: DVec3, h
 #[must_use]
 pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
     let dims = &r.dims;
-    let reference = DQuat::from_rotation_y(target.yaw) * DVec3::X;
+    // The walking direction turned by the foot's yaw: Ry(yaw)·x.
+    let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
+    let reference = DVec3::new(cos_yaw, 0.0, -sin_yaw);
     let ik = solve_two_bone(hip, target.ankle, dims.thigh, dims.shank, reference);
     let foot = foot_rotation(target.yaw, target.pitch);
     let toe = foot * DQuat::from_rotation_z(target.toe_bend);

@@ -41,10 +41,16 @@ pub fn trunk_bend(lengths: [f64; 3], obliquity: f64) -> f64 {
     if obliquity.abs() < 1e-12 {
         return 0.0;
     }
-    // f(0) has θ's sign, f(−2θ) the opposite one for any trunk whose top segment is not
-    // longer than the other two together.
-    let (mut a, mut b) = (0.0, -2.0 * obliquity);
+    // The small-angle solution, α ≈ −θ(l1 + l2 + l3)/(l2 + 2 l3), brackets the root tightly, so
+    // Regula Falsi needs three or four steps; f(0) has θ's sign and f(−2θ) the opposite one
+    // for any trunk whose top segment is not longer than the other two, the fallback bracket.
+    let guess = -obliquity * (l1 + l2 + l3) / (l2 + 2.0 * l3);
+    let (mut a, mut b) = (guess * 0.98, guess * 1.02);
     let (mut fa, mut fb) = (f(a), f(b));
+    if fa * fb > 0.0 {
+        (a, b) = (0.0, -2.0 * obliquity);
+        (fa, fb) = (f(a), f(b));
+    }
     if fa * fb > 0.0 {
         return -obliquity; // degenerate trunk: lean the upper segments back by θ
     }
@@ -108,10 +114,6 @@ impl Default for UpperBody {
     }
 }
 
-fn yaw_roll_pitch(yaw: f64, roll: f64, pitch: f64) -> DQuat {
-    DQuat::from_rotation_y(yaw) * DQuat::from_rotation_x(-roll) * DQuat::from_rotation_z(-pitch)
-}
-
 impl UpperBody {
     /// Solves the upper body for the pelvis and the arm curves' values (shoulder and elbow
     /// flexion, rad, per side).
@@ -130,11 +132,14 @@ impl UpperBody {
         let thorax = -r.counter_rotation * yaw;
         let twist = thorax - yaw;
         let lean = r.trunk_lean;
-        let spine = yaw_roll_pitch(yaw + twist / 3.0, theta + alpha, 0.5 * lean);
-        let chest = yaw_roll_pitch(yaw + 2.0 * twist / 3.0, theta + 2.0 * alpha, lean);
-        let neck = yaw_roll_pitch(0.5 * thorax, 0.0, 0.5 * lean);
+        let half_lean = DQuat::from_rotation_z(-0.5 * lean);
+        let spine = DQuat::from_rotation_y(yaw + twist / 3.0) * DQuat::from_rotation_x(-(theta + alpha)) * half_lean;
+        // Chest and shoulder girdle share their bend and lean; only their turn differs.
+        let chest_tilt = DQuat::from_rotation_x(-(theta + 2.0 * alpha)) * DQuat::from_rotation_z(-lean);
+        let chest = DQuat::from_rotation_y(yaw + 2.0 * twist / 3.0) * chest_tilt;
+        let neck = DQuat::from_rotation_y(0.5 * thorax) * half_lean;
         let head = DQuat::IDENTITY;
-        let girdle_rot = yaw_roll_pitch(thorax, theta + 2.0 * alpha, lean);
+        let girdle_rot = DQuat::from_rotation_y(thorax) * chest_tilt;
         let mut upper_arm = [DQuat::IDENTITY; 2];
         let mut forearm = [DQuat::IDENTITY; 2];
         for side in Side::BOTH {
