@@ -5,6 +5,8 @@ use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
 use crate::output::{joint_table, write_atomic};
 use clap::{Parser, Subcommand};
+
+mod optimise;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -48,6 +50,20 @@ pub enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
         /// Override a key: --set walk.speed_mps=1.4 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
+    /// Run the walk and print each step's pelvis choice (the pelvis-acceleration optimisation)
+    Optimise {
+        /// Config file.
+        config: PathBuf,
+        /// Steps to run [default: two per cycle of the config's sim.cycles]
+        #[arg(long)]
+        steps: Option<u32>,
+        /// One JSON object a line (each step with all its candidates, then a summary line)
+        #[arg(long)]
+        json: bool,
+        /// Override a key: --set optimiser.method="brent" (repeatable)
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
@@ -98,6 +114,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Some(Command::Simulate { config, cycles, fps, out, sets }) => {
             simulate(&config, cycles, fps, out.as_deref(), &sets)
         }
+        Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));

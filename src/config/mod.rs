@@ -349,6 +349,10 @@ fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
             }
             Ok(Value::Int(n))
         }
+        Kind::Bool => match value {
+            DeValue::Boolean(b) => Ok(Value::Bool(*b)),
+            other => Err(format!("expected true or false, found {}", describe(other))),
+        },
         Kind::Choice(words) => {
             let DeValue::String(s) = value else {
                 return Err(format!("expected a quoted word, found {}; valid: {valid}", describe(value)));

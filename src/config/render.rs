@@ -52,6 +52,7 @@ pub fn value_text(value: &Value) -> Option<String> {
         Value::Real(x) => Some(toml_number(*x)),
         Value::Int(n) => Some(n.to_string()),
         Value::Word(w) => Some(format!("\"{w}\"")),
+        Value::Bool(b) => Some(b.to_string()),
         Value::Auto => None,
     }
 }

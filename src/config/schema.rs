@@ -4,7 +4,7 @@
 //! TUI's parameter editor. Defaults come from `WalkParams::default()`, never from here.
 
 use crate::model::body::Sex;
-use crate::model::params::{TerrainChoice, WalkParams};
+use crate::model::params::{CostForm, SearchMethod, TerrainChoice, WalkParams};
 
 /// A parameter's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -17,6 +17,8 @@ pub enum Value {
     Int(i64),
     /// One of a list of words.
     Word(&'static str),
+    /// A switch.
+    Bool(bool),
 }
 
 /// What values a key takes.
@@ -40,6 +42,8 @@ pub enum Kind {
     },
     /// One of these words.
     Choice(&'static [&'static str]),
+    /// true or false.
+    Bool,
 }
 
 /// One config key.
@@ -91,6 +95,7 @@ impl ParamSpec {
             Kind::Choice(words) => {
                 format!("one of {}", words.iter().map(|w| format!("\"{w}\"")).collect::<Vec<_>>().join(", "))
             }
+            Kind::Bool => "true or false".to_string(),
         }
     }
 }
@@ -131,6 +136,8 @@ macro_rules! auto {
 }
 
 const SEXES: &[&str] = &["female", "male"];
+const METHODS: &[&str] = &["thesis", "golden", "brent", "joint"];
+const COST_FORMS: &[&str] = &["squared", "absolute"];
 const TERRAINS: &[&str] = &["flat", "stairs", "slope", "random"];
 const DIRECTIONS: &[&str] = &["up", "down"];
 
@@ -184,6 +191,80 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(arms => spread_deg, "deg", 0.0, 45.0, "Arm abduction away from the trunk"),
     real!(arms => counter_rotation_pct, "%", 0.0, 150.0, "Thorax counter-rotation against the pelvic rotation"),
     real!(ik => reach_margin, "", 0.95, 1.0, "Share of full leg reach the planner keeps the stance leg within (the knee never locks)"),
+    ParamSpec {
+        key: "optimiser.enabled",
+        unit: "",
+        doc: "Choose the pelvis position at each double support by the acceleration cost; false uses the fixed rule (halfway between mid-stances)",
+        kind: Kind::Bool,
+        get: |p| Value::Bool(p.optimiser.enabled),
+        set: |p, v| {
+            if let Value::Bool(b) = v {
+                p.optimiser.enabled = *b;
+            }
+        },
+    },
+    ParamSpec {
+        key: "optimiser.method",
+        unit: "",
+        doc: "Search: thesis (two levels of candidates), golden (golden section), brent (bracket by the first level, then Brent), joint (Brent on position and height)",
+        kind: Kind::Choice(METHODS),
+        get: |p| Value::Word(p.optimiser.method.name()),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.optimiser.method = SearchMethod::from_name(w).unwrap_or(SearchMethod::Thesis);
+            }
+        },
+    },
+    ParamSpec {
+        key: "optimiser.candidates",
+        unit: "",
+        doc: "Thesis method: evenly spaced candidates over the range (first level; brent uses it to bracket)",
+        kind: Kind::Int { min: 3, max: 50 },
+        get: |p| Value::Int(i64::from(p.optimiser.candidates)),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.optimiser.candidates = u32::try_from(*n).unwrap_or(5);
+            }
+        },
+    },
+    ParamSpec {
+        key: "optimiser.refine",
+        unit: "",
+        doc: "Thesis method: candidates spread around the best of the first level (second level; 0 for one level)",
+        kind: Kind::Int { min: 0, max: 50 },
+        get: |p| Value::Int(i64::from(p.optimiser.refine)),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.optimiser.refine = u32::try_from(*n).unwrap_or(5);
+            }
+        },
+    },
+    ParamSpec {
+        key: "optimiser.cost",
+        unit: "",
+        doc: "squared: sum of W x squared joint acceleration x dt; absolute: sum of W x |acceleration| x dt",
+        kind: Kind::Choice(COST_FORMS),
+        get: |p| Value::Word(if p.optimiser.cost == CostForm::Absolute { "absolute" } else { "squared" }),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.optimiser.cost = if *w == "absolute" { CostForm::Absolute } else { CostForm::Squared };
+            }
+        },
+    },
+    ParamSpec {
+        key: "optimiser.samples",
+        unit: "",
+        doc: "Samples of the simulated stance, half mid-stance to double support, half double support to the next mid-stance",
+        kind: Kind::Int { min: 10, max: 400 },
+        get: |p| Value::Int(i64::from(p.optimiser.samples)),
+        set: |p, v| {
+            if let Value::Int(n) = v {
+                p.optimiser.samples = u32::try_from(*n).unwrap_or(50);
+            }
+        },
+    },
+    real!(optimiser => range_pct, "%", 10.0, 95.0, "Width of the searched range, centred between the two mid-stance positions, as a share of their distance"),
+    real!(optimiser => tolerance_mm, "mm", 0.01, 10.0, "Golden, brent and joint stop when the position is known this closely"),
     real!(optimiser => weight_hip, "", 0.0, 100.0, "Weight of the hip's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_knee, "", 0.0, 100.0, "Weight of the knee's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_ankle, "", 0.0, 100.0, "Weight of the ankle's squared angular acceleration in the pelvis choice"),

@@ -12,6 +12,7 @@ pub mod body;
 pub mod curve;
 pub mod gait_curves;
 pub mod ik;
+pub mod optimise;
 pub mod params;
 pub mod terrain;
 pub mod walk;

@@ -84,10 +84,64 @@ pub struct IkParams {
     pub reach_margin: f64,
 }
 
-/// `[optimiser]` (the weights of the stance-leg acceleration cost, spec §8).
+/// How the pelvis position at double support is searched for (spec §8).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SearchMethod {
+    /// The thesis's two levels: evenly spaced candidates, then a finer set around the best.
+    Thesis,
+    /// Golden-section search on the cost over the whole range.
+    Golden,
+    /// The thesis's first level to bracket the best, then Brent's method inside the bracket.
+    Brent,
+    /// Brent on the forward position, then on the height, then on the position again
+    /// (Chung & Hahn search both).
+    Joint,
+}
+
+impl SearchMethod {
+    /// Every method, in the order the config documents them.
+    pub const ALL: [SearchMethod; 4] =
+        [SearchMethod::Thesis, SearchMethod::Golden, SearchMethod::Brent, SearchMethod::Joint];
+
+    /// The config's name for it (`thesis`, `golden`, `brent`, `joint`).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            SearchMethod::Thesis => "thesis",
+            SearchMethod::Golden => "golden",
+            SearchMethod::Brent => "brent",
+            SearchMethod::Joint => "joint",
+        }
+    }
+
+    /// The method called `name` in a config.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<SearchMethod> {
+        SearchMethod::ALL.into_iter().find(|m| m.name() == name)
+    }
+}
+
+/// How joint accelerations are summed into the cost.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CostForm {
+    /// Σ W·θ̈²·Δt: smooth, the standard form.
+    Squared,
+    /// Σ W·|θ̈|·Δt: the thesis's literal integral of the second derivative.
+    Absolute,
+}
+
+/// `[optimiser]`: the pelvis-acceleration optimisation (spec §8).
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct OptimiserParams {
+    pub enabled: bool,
+    pub method: SearchMethod,
+    pub candidates: u32,
+    pub refine: u32,
+    pub cost: CostForm,
+    pub samples: u32,
+    pub range_pct: f64,
+    pub tolerance_mm: f64,
     pub weight_hip: f64,
     pub weight_knee: f64,
     pub weight_ankle: f64,
@@ -216,7 +270,19 @@ impl Default for WalkParams {
                 counter_rotation_pct: 60.0,
             },
             ik: IkParams { reach_margin: 0.999 },
-            optimiser: OptimiserParams { weight_hip: 1.0, weight_knee: 1.0, weight_ankle: 1.0 },
+            optimiser: OptimiserParams {
+                enabled: true,
+                method: SearchMethod::Thesis,
+                candidates: 5,
+                refine: 5,
+                cost: CostForm::Squared,
+                samples: 50,
+                range_pct: 60.0,
+                tolerance_mm: 0.5,
+                weight_hip: 1.0,
+                weight_knee: 1.0,
+                weight_ankle: 1.0,
+            },
             terrain: TerrainParams {
                 kind: TerrainChoice::Flat,
                 start_x_m: 2.0,

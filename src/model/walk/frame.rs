@@ -3,7 +3,7 @@
 
 use crate::model::body::{Bone, Side};
 use crate::model::walk::Walker;
-use crate::model::walk::leg::LegPhase;
+use crate::model::walk::leg::{LegPhase, LegPose};
 use glam::{DQuat, DVec3};
 
 /// Which feet carry the body.
@@ -94,6 +94,42 @@ pub struct Frame {
     pub legs: [LegFrame; 2],
 }
 
+/// Clinical angles of one leg (deg).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LegAngles {
+    /// Hip flexion, thigh against the pelvis, flexion +.
+    pub hip_flex_deg: f64,
+    /// Hip abduction, away from the midline +.
+    pub hip_abd_deg: f64,
+    /// Knee flexion.
+    pub knee_flex_deg: f64,
+    /// Ankle dorsiflexion (plantarflexion −), foot against the shank.
+    pub ankle_dorsi_deg: f64,
+}
+
+/// The clinical angles of a solved leg under a pelvis with world rotation `pelvis`. Shared
+/// by the joint table and the pelvis optimisation's cost, so both measure the same thing.
+#[must_use]
+pub fn leg_angles(pelvis: DQuat, leg: &LegPose, side_sign: f64) -> LegAngles {
+    let thigh = (leg.knee - leg.hip).normalize();
+    let shank = (leg.ankle - leg.knee).normalize();
+    let (hip_flex, hip_abd) = sagittal_and_frontal(pelvis, thigh, side_sign);
+    let knee = thigh.dot(shank).clamp(-1.0, 1.0).acos();
+    // The shank's frame: y up along the shank, z on the knee hinge, x forward.
+    let hinge = (leg.ankle - leg.hip).cross(leg.swivel).normalize_or(DVec3::Z);
+    let y = -shank;
+    let z = (hinge - y * y.dot(hinge)).normalize_or(DVec3::Z);
+    let x = y.cross(z);
+    let foot_forward = leg.foot * DVec3::X;
+    let ankle = foot_forward.dot(y).atan2(foot_forward.dot(x));
+    LegAngles {
+        hip_flex_deg: hip_flex.to_degrees(),
+        hip_abd_deg: hip_abd.to_degrees(),
+        knee_flex_deg: knee.to_degrees(),
+        ankle_dorsi_deg: ankle.to_degrees(),
+    }
+}
+
 /// Flexion of a limb segment pointing along `dir` (world), measured in the sagittal plane of
 /// the parent frame `parent` (forward of straight down +), and its abduction toward `side`.
 fn sagittal_and_frontal(parent: DQuat, dir: DVec3, side_sign: f64) -> (f64, f64) {
@@ -110,14 +146,7 @@ impl Walker {
         let legs = Side::BOTH.map(|side| {
             let leg = self.leg(side);
             let p = leg.pose;
-            let thigh_dir = (p.knee - p.hip).normalize();
-            let shank_dir = (p.ankle - p.knee).normalize();
-            let (hip_flex, hip_abd) = sagittal_and_frontal(pelvis.rotation, thigh_dir, side.sign());
-            let knee = thigh_dir.dot(shank_dir).clamp(-1.0, 1.0).acos();
-            // Ankle: the foot's forward axis in the shank's frame.
-            let shin = pose.rot(Bone::shin(side));
-            let foot_fwd = shin.inverse() * (p.foot * DVec3::X);
-            let ankle = foot_fwd.y.atan2(foot_fwd.x);
+            let angles = leg_angles(pelvis.rotation, &p, side.sign());
             let chest = pose.rot(Bone::Chest);
             let upper_dir = pose.pos(Bone::forearm(side)) - pose.pos(Bone::upper_arm(side));
             let fore_dir = pose.pos(Bone::hand(side)) - pose.pos(Bone::forearm(side));
@@ -128,10 +157,10 @@ impl Walker {
                 phase: (self.phase() - leg.cycle_start).rem_euclid(1.0),
                 leg_phase: leg.phase,
                 phase_serial: leg.phase_serial,
-                hip_flex_deg: hip_flex.to_degrees(),
-                hip_abd_deg: hip_abd.to_degrees(),
-                knee_flex_deg: knee.to_degrees(),
-                ankle_dorsi_deg: ankle.to_degrees(),
+                hip_flex_deg: angles.hip_flex_deg,
+                hip_abd_deg: angles.hip_abd_deg,
+                knee_flex_deg: angles.knee_flex_deg,
+                ankle_dorsi_deg: angles.ankle_dorsi_deg,
                 hip: p.hip,
                 knee: p.knee,
                 ankle: p.ankle,

@@ -16,6 +16,7 @@ use crate::model::body::{Bone, Pose, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::solve_two_bone;
+use crate::model::optimise::{Candidate, StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -89,8 +90,8 @@ pub struct StepPlan {
     pub side: Side,
     /// Master phase of the toe-off.
     pub phase: f64,
-    /// Chosen pelvis x at the coming double support.
-    pub double_support_x: f64,
+    /// The pelvis-position choice for the coming double support.
+    pub optimisation: StepRecord,
     /// Pelvis height at that double support after the terrain rule and reach guard.
     pub double_support_y: f64,
     /// How much the reach guard lowered the pelvis (m).
@@ -115,6 +116,9 @@ pub struct Walker {
     time_s: f64,
     footfalls: Vec<Footfall>,
     step_plans: Vec<StepPlan>,
+    last_problem: Option<StepProblem>,
+    last_ds_ratio: f64,
+    infeasible_steps: u64,
     reach_failures: u64,
     pelvis: PelvisPose,
     arm_hang: ArmHang,
@@ -231,6 +235,9 @@ impl Walker {
             time_s: 0.0,
             footfalls: vec![left, right],
             step_plans: Vec::new(),
+            last_problem: None,
+            last_ds_ratio: 0.5,
+            infeasible_steps: 0,
             reach_failures: 0,
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
@@ -367,7 +374,13 @@ impl Walker {
     /// The leg's IK target at master phase `phase`, from its state and the hip position.
     #[must_use]
     pub fn leg_target(&self, side: Side, phase: f64, hip: DVec3) -> LegTarget {
-        let leg = &self.legs[side.index()];
+        self.target_of(&self.legs[side.index()], phase, hip)
+    }
+
+    /// The IK target of a leg in state `leg` (real, or projected by the optimiser) at master
+    /// phase `phase`: the one place where the four phases turn into ankle targets.
+    #[must_use]
+    pub fn target_of(&self, leg: &LegState, phase: f64, hip: DVec3) -> LegTarget {
         let r = &self.r;
         let dims = &r.dims;
         let q = phase - leg.cycle_start;
@@ -412,7 +425,7 @@ impl Walker {
             LegPhase::Swing => {
                 let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
                 let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
-                swing_target(plan, s, side, r)
+                swing_target(plan, s, leg.side, r)
             }
         }
     }
@@ -428,18 +441,14 @@ impl Walker {
     /// Enters the phase after the current one at master phase `at` (the boundary).
     fn enter_next_phase(&mut self, side: Side, at: f64) {
         let i = side.index();
-        let dims = self.r.dims.clone();
         let pose = self.legs[i].pose;
         let next = self.legs[i].phase.next();
         match next {
-            LegPhase::Midstance => self.legs[i].anchor = pose.target.ankle,
-            LegPhase::HeelRise => {
-                let leg = &mut self.legs[i];
-                leg.anchor =
-                    pose.target.ankle + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * dims.ball_local();
-                leg.heel_rise_scale = (self.r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+            LegPhase::Midstance | LegPhase::HeelRise => enter_stance_phase(&mut self.legs[i], &pose, &self.r),
+            LegPhase::Swing => {
+                self.plan_step(side, at, &pose);
+                self.legs[i].phase = next;
             }
-            LegPhase::Swing => self.plan_step(side, at, &pose),
             LegPhase::LoadingResponse => {
                 let leg = &mut self.legs[i];
                 let plan = leg.swing.take().expect("a landing leg was swinging");
@@ -447,11 +456,30 @@ impl Walker {
                 leg.anchor = plan.to.heel;
                 leg.strike_angle = pose.target.pitch - plan.to.ground_angle;
                 leg.cycle_start += 1.0;
+                leg.phase = next;
             }
         }
-        let leg = &mut self.legs[i];
-        leg.phase = next;
-        leg.phase_serial += 1;
+        self.legs[i].phase_serial += 1;
+    }
+
+    /// Moves a copy of a stance leg's state forward to master phase `phase` through its stance
+    /// phase changes, with the pelvis of `plan`: what the leg will be doing then, by the same
+    /// code the walk runs. Stops before toe-off (a swing needs planning, not projection).
+    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
+        loop {
+            let end = match leg.phase {
+                LegPhase::LoadingResponse => self.r.foot_flat,
+                LegPhase::Midstance => self.r.heel_rise,
+                LegPhase::HeelRise | LegPhase::Swing => return,
+            };
+            let boundary = leg.cycle_start + end;
+            if phase < boundary {
+                return;
+            }
+            let hip = self.pelvis_with_plan(plan, boundary).hip(leg.side.sign());
+            let pose = solve_leg(&self.r, hip, self.target_of(leg, boundary, hip));
+            enter_stance_phase(leg, &pose, &self.r);
+        }
     }
 
     /// The pelvis key at mid-stance over `footfall`, whose heel strike is at master phase
@@ -484,19 +512,86 @@ impl Walker {
         let ground = trailing.heel.y.min(leading.heel.y);
         PelvisKey {
             phase: strike_phase + 0.5 * (r.toe_off - 0.5),
-            x: self.choose_double_support_x(ms_before, ms_after),
+            x: 0.5 * (ms_before.x + ms_after.x),
             y: ground + r.dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
             kind: KeyKind::DoubleSupport,
         }
     }
 
-    /// Where the pelvis is at mid double support: the one choice per step that the
-    /// pelvis-acceleration optimisation (spec §8) makes. Until it is wired in, the fixed rule:
-    /// halfway between the mid-stance positions around it, so the two half-steps are equally
-    /// long.
-    #[must_use]
-    pub fn choose_double_support_x(&self, ms_before: &PelvisKey, ms_after: &PelvisKey) -> f64 {
-        0.5 * (ms_before.x + ms_after.x)
+    /// Where the pelvis is at the coming mid double support: the one choice per step that
+    /// the pelvis-acceleration optimisation (spec §8) makes, written into the plan's newest
+    /// double-support key. With the optimiser off, the fixed rule: halfway between the
+    /// mid-stance positions around it. When no candidate is feasible the previous step's
+    /// choice (as a share of the distance between the mid-stances) is kept and counted; the
+    /// reach guard that runs next lowers the pelvis until the legs reach.
+    #[allow(clippy::too_many_arguments)]
+    fn choose_double_support(
+        &mut self,
+        side: Side,
+        at: f64,
+        step: i64,
+        landing: LegState,
+        ms_before: PelvisKey,
+        ds: PelvisKey,
+        ms_after: PelvisKey,
+    ) -> StepRecord {
+        let settings = self.params.optimiser.clone();
+        let half_range = 0.5 * settings.range_pct / 100.0 * (ms_after.x - ms_before.x);
+        let centre = 0.5 * (ms_before.x + ms_after.x);
+        let problem = StepProblem {
+            plan: self.plan.clone(),
+            stance: self.legs[side.other().index()].clone(),
+            landing,
+            ms_before,
+            ds,
+            ms_after,
+            range: (centre - half_range, centre + half_range),
+            height_range: (ds.y - 0.03, ds.y + 0.01),
+            settings,
+            heel_rise_allowance: f64::INFINITY,
+        }
+        .with_allowance(self);
+        let started = std::time::Instant::now();
+        let fixed_x = problem.fixed_rule_x();
+        let fixed_rule = Candidate { x: fixed_x, y: ds.y, cost: problem.cost(self, fixed_x, ds.y) };
+        let (method, candidates) = if problem.settings.enabled {
+            (Some(problem.settings.method), problem.search(self))
+        } else {
+            (None, vec![fixed_rule])
+        };
+        let best = candidates
+            .iter()
+            .filter(|c| c.cost.is_some())
+            .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
+            .copied();
+        let fallback = best.is_none();
+        let chosen = best.unwrap_or_else(|| {
+            self.infeasible_steps += 1;
+            let x = ms_before.x + self.last_ds_ratio * (ms_after.x - ms_before.x);
+            Candidate { x, y: ds.y, cost: problem.cost(self, x, ds.y) }
+        });
+        let elapsed_us = started.elapsed().as_secs_f64() * 1e6;
+        if let Some(key) = self.plan.last_of_mut(KeyKind::DoubleSupport) {
+            key.x = chosen.x;
+            key.y = chosen.y;
+        }
+        self.last_ds_ratio = (chosen.x - ms_before.x) / (ms_after.x - ms_before.x);
+        let record = StepRecord {
+            step,
+            side,
+            phase: at,
+            method,
+            evaluations: if method.is_some() { candidates.len() as u32 } else { 0 },
+            feasible: candidates.iter().filter(|c| c.cost.is_some()).count() as u32,
+            candidates,
+            chosen,
+            window_x: (ms_before.x, ms_after.x),
+            fixed_rule,
+            fallback,
+            elapsed_us,
+        };
+        self.last_problem = Some(problem);
+        record
     }
 
     /// Lowers the newest pelvis keys where `side`'s leg, striking at `strike_phase`, could not
@@ -601,13 +696,6 @@ impl Walker {
         };
         let strike_phase = self.legs[i].cycle_start + 1.0;
 
-        // Pelvis keys: the coming double support, then this leg's mid-stance.
-        let ms_before = *self.plan.last_of(KeyKind::MidStance).expect("a mid-stance key is planned");
-        let ms_after = self.midstance_key(&to, strike_phase);
-        let ds = self.double_support_key(&other, &to, strike_phase, &ms_before, &ms_after);
-        self.plan.push(ds);
-        self.plan.push(ms_after);
-
         // Swing planning step 1: the foot pitch curve, scaled to the toe-off angle and turned
         // up at its end where the footfall slopes up so the toe does not land first.
         let pitch_from = toe_off_pose.target.pitch;
@@ -619,6 +707,26 @@ impl Walker {
             ankle_deg.shift_last_two((MIN_STRIKE_ANGLE - strike).to_degrees());
         }
         let strike_angle = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+
+        // Pelvis keys: the coming double support (its position chosen below), then this leg's
+        // mid-stance.
+        let ms_before = *self.plan.last_of(KeyKind::MidStance).expect("a mid-stance key is planned");
+        let ms_after = self.midstance_key(&to, strike_phase);
+        let ds = self.double_support_key(&other, &to, strike_phase, &ms_before, &ms_after);
+        self.plan.push(ds);
+        self.plan.push(ms_after);
+        let landing = LegState {
+            side,
+            phase: LegPhase::LoadingResponse,
+            cycle_start: strike_phase,
+            footfall: to,
+            anchor: to.heel,
+            strike_angle,
+            heel_rise_scale: self.legs[i].heel_rise_scale,
+            swing: None,
+            phase_serial: 0,
+            pose: *toe_off_pose,
+        };
 
         // Step 2: the heel-height curve, scaled to the heel's height at toe-off, its end
         // moved by the terrain step, its middle raised by the knee-lift parameter.
@@ -647,11 +755,22 @@ impl Walker {
         };
         // The end of the swing and the stance phases this plan sets up must reach: lower the
         // pelvis where they would not.
+        // The guard runs twice: first with the double support at the fixed rule, so that the
+        // optimiser searches around keys the legs can follow (the mid-stance key in
+        // particular, which no candidate moves), then for the chosen position.
         let saved_footfall = self.legs[i].footfall;
         let saved_strike = self.legs[i].strike_angle;
         self.legs[i].footfall = to;
         self.legs[i].strike_angle = strike_angle;
-        let guard_drop = self.guard_stance_reach(side, strike_phase, Some(&plan));
+        let mut guard_drop = self.guard_stance_reach(side, strike_phase, Some(&plan));
+        self.legs[i].footfall = saved_footfall;
+        self.legs[i].strike_angle = saved_strike;
+        let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
+        let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
+        let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
+        self.legs[i].footfall = to;
+        self.legs[i].strike_angle = strike_angle;
+        guard_drop += self.guard_stance_reach(side, strike_phase, Some(&plan));
         self.legs[i].footfall = saved_footfall;
         self.legs[i].strike_angle = saved_strike;
         // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
@@ -661,7 +780,7 @@ impl Walker {
             step: to.step,
             side,
             phase: at,
-            double_support_x: ds.x,
+            optimisation: record,
             double_support_y: self.plan.last_of(KeyKind::DoubleSupport).map_or(ds.y, |k| k.y),
             reach_guard_drop: guard_drop,
             swing_raises: plan.raises,
@@ -858,6 +977,18 @@ impl Walker {
         &self.step_plans
     }
 
+    /// The last step's optimisation problem (for the cost landscape).
+    #[must_use]
+    pub fn last_step_problem(&self) -> Option<&StepProblem> {
+        self.last_problem.as_ref()
+    }
+
+    /// Steps at which no candidate pelvis position was feasible.
+    #[must_use]
+    pub fn infeasible_steps(&self) -> u64 {
+        self.infeasible_steps
+    }
+
     /// IK solves that had to clamp an unreachable target, counted over every evaluated frame.
     #[must_use]
     pub fn reach_failures(&self) -> u64 {
@@ -898,6 +1029,25 @@ fn trajectory_curves(design: &CurveSet) -> TrajectoryCurves {
         forward_ds_ms: design.get(CurveName::PelvisForwardDsMs).clone(),
         forward_ms_ds: design.get(CurveName::PelvisForwardMsDs).clone(),
         vertical: design.get(CurveName::PelvisVertical).clone(),
+    }
+}
+
+/// Moves a stance leg into its next stance phase, given its pose at the boundary: midstance
+/// holds the ankle where loading response left it; heel rise holds the toe joint of the flat
+/// foot and freezes the heel-rise curve's stride scale.
+pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Resolved) {
+    match leg.phase {
+        LegPhase::LoadingResponse => {
+            leg.anchor = pose_at_boundary.target.ankle;
+            leg.phase = LegPhase::Midstance;
+        }
+        LegPhase::Midstance => {
+            leg.anchor = pose_at_boundary.target.ankle
+                + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
+            leg.heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+            leg.phase = LegPhase::HeelRise;
+        }
+        LegPhase::HeelRise | LegPhase::Swing => {}
     }
 }
 

@@ -1,0 +1,463 @@
+//! The pelvis-acceleration optimisation (spec §8, thesis eq. 6.6, after Chung & Hahn 1999).
+//!
+//! Once per step, at the toe-off that ends a double support, the walk chooses where the pelvis
+//! will be at the *next* mid double support. A candidate position is scored by simulating the
+//! stance that it shapes — from the current stance leg's mid-stance to the double support,
+//! then the landing leg from the double support to its own mid-stance — with the walk's own
+//! phase and IK code ([`Walker::project_stance`], [`Walker::target_of`], [`solve_leg`]), and
+//! summing the weighted squared angular accelerations of hip, knee and ankle. A candidate at
+//! which a stance leg cannot reach is infeasible.
+//!
+//! "Cannot reach" includes rolling over the toes further than the heel-rise curve says. The
+//! walk lets a trailing leg roll on past its curve when the hip runs ahead of it
+//! ([`Walker::target_of`]), so no candidate is ever strictly out of reach in heel rise; but
+//! a leg doing that holds its knee straight at the reach limit, which has no knee
+//! acceleration at all, and the cost alone would drive the pelvis forward into a stiff,
+//! hyper-extended push-off (measured on the default walk: hip extension −37° instead of
+//! −21°, heel rise 30° past its curve). A candidate needing more than
+//! [`HEEL_RISE_SLACK_DEG`] of extra heel rise beyond what the fixed rule's position needs
+//! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
+
+use crate::model::body::Side;
+use crate::model::params::{CostForm, OptimiserParams, SearchMethod};
+use crate::model::walk::frame::leg_angles;
+use crate::model::walk::leg::LegState;
+use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan};
+use crate::model::walk::{Walker, solve_leg};
+
+/// Extra heel rise past the curve (deg) that a candidate may ask of a stance leg beyond what
+/// the fixed rule's position asks (the default walk's fixed rule asks about 1.4°).
+pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
+
+/// One evaluated pelvis position.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Candidate {
+    /// Forward position of the pelvis at mid double support (m).
+    pub x: f64,
+    /// Its height (m).
+    pub y: f64,
+    /// The cost, `None` where a stance leg could not reach.
+    pub cost: Option<f64>,
+}
+
+/// What was decided for one step, kept for the lab's optimiser panel, `gaitlab optimise` and
+/// the report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepRecord {
+    /// Step number of the footfall the decision prepares.
+    pub step: i64,
+    /// The leg taking the step.
+    pub side: Side,
+    /// Master phase of the decision (the toe-off).
+    pub phase: f64,
+    /// How it was searched; `None` when the optimiser is off (fixed rule).
+    pub method: Option<SearchMethod>,
+    /// Every evaluation, in the order made.
+    pub candidates: Vec<Candidate>,
+    /// The chosen position.
+    pub chosen: Candidate,
+    /// Forward pelvis positions at the mid-stances before and after the double support (m):
+    /// the window the choice sits in.
+    pub window_x: (f64, f64),
+    /// The fixed rule's position and cost, for comparison.
+    pub fixed_rule: Candidate,
+    /// Cost evaluations the search made.
+    pub evaluations: u32,
+    /// How many of them were feasible.
+    pub feasible: u32,
+    /// No candidate was feasible and the previous choice was kept.
+    pub fallback: bool,
+    /// Wall time of the search (µs); the only number in a record that varies between runs.
+    pub elapsed_us: f64,
+}
+
+impl StepRecord {
+    /// Where the chosen position sits between the two mid-stances: 0 at the stance leg's,
+    /// 1 at the landing leg's. The fixed rule is 0.5; a steady walk repeats the same ratio.
+    #[must_use]
+    pub fn chosen_ratio(&self) -> f64 {
+        let (a, b) = self.window_x;
+        if (b - a).abs() < 1e-12 { 0.5 } else { (self.chosen.x - a) / (b - a) }
+    }
+}
+
+/// The weighted acceleration cost of joint-angle samples (rad) spaced `dt` seconds apart:
+/// Σ_j W_j Σ_i θ̈_j,i² Δt (or |θ̈|·Δt), θ̈ by central differences at the interior samples.
+///
+/// ```
+/// use gaitlab::model::optimise::acceleration_cost;
+/// use gaitlab::model::params::CostForm;
+/// let uniform: Vec<[f64; 3]> = (0..10).map(|i| [0.5 * i as f64, 0.0, -0.25 * i as f64]).collect();
+/// assert_eq!(acceleration_cost(&uniform, 0.01, [1.0, 1.0, 1.0], CostForm::Squared), 0.0);
+/// ```
+#[must_use]
+pub fn acceleration_cost(angles: &[[f64; 3]], dt: f64, weights: [f64; 3], form: CostForm) -> f64 {
+    let mut cost = 0.0;
+    for w in angles.windows(3) {
+        for j in 0..3 {
+            let acc = (w[2][j] - 2.0 * w[1][j] + w[0][j]) / (dt * dt);
+            cost += weights[j]
+                * match form {
+                    CostForm::Squared => acc * acc * dt,
+                    CostForm::Absolute => acc.abs() * dt,
+                };
+        }
+    }
+    cost
+}
+
+/// One step's choice: the plan it changes, the legs it simulates and the range it searches.
+#[derive(Clone, Debug)]
+pub struct StepProblem {
+    /// The pelvis plan with the double-support key and the landing leg's mid-stance key last.
+    pub plan: PelvisPlan,
+    /// The leg that stays on the ground through the coming swing, as it is now.
+    pub stance: LegState,
+    /// The swinging leg as it will be at its heel strike.
+    pub landing: LegState,
+    /// The stance leg's mid-stance key (start of the simulated window).
+    pub ms_before: PelvisKey,
+    /// The double-support key being chosen (its x and y are the candidate's).
+    pub ds: PelvisKey,
+    /// The landing leg's mid-stance key (end of the window).
+    pub ms_after: PelvisKey,
+    /// Forward positions searched.
+    pub range: (f64, f64),
+    /// Heights the joint search may use.
+    pub height_range: (f64, f64),
+    /// The settings.
+    pub settings: OptimiserParams,
+    /// The most extra heel rise (rad) a candidate may ask of a stance leg: the fixed rule's
+    /// own plus [`HEEL_RISE_SLACK_DEG`] (set by [`StepProblem::with_allowance`]).
+    pub heel_rise_allowance: f64,
+}
+
+impl StepProblem {
+    /// The fixed rule's position: halfway between the two mid-stance positions.
+    #[must_use]
+    pub fn fixed_rule_x(&self) -> f64 {
+        0.5 * (self.ms_before.x + self.ms_after.x)
+    }
+
+    /// The cost of putting the pelvis at (`x`, `y`) at mid double support; `None` if a stance
+    /// leg cannot reach its ground contact somewhere in the simulated window or at the heel
+    /// strike.
+    #[must_use]
+    pub fn cost(&self, walker: &Walker, x: f64, y: f64) -> Option<f64> {
+        self.simulate(walker, x, y).0
+    }
+
+    /// Sets [`StepProblem::heel_rise_allowance`] from the fixed rule's position.
+    #[must_use]
+    pub fn with_allowance(mut self, walker: &Walker) -> StepProblem {
+        self.heel_rise_allowance = f64::INFINITY;
+        let (_, fixed_rule_extra) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
+        self.heel_rise_allowance = fixed_rule_extra.max(0.0) + HEEL_RISE_SLACK_DEG.to_radians();
+        self
+    }
+
+    /// The cost (as [`StepProblem::cost`]) and the most extra heel rise a stance leg needed
+    /// before the simulation ended (rad).
+    fn simulate(&self, walker: &Walker, x: f64, y: f64) -> (Option<f64>, f64) {
+        let mut most_extra: f64 = 0.0;
+        let mut plan = self.plan.clone();
+        let key = plan.last_of_mut(KeyKind::DoubleSupport).expect("the problem's plan has its key");
+        key.x = x;
+        key.y = y;
+        let r = walker.resolved();
+        let limit = r.reach_margin * r.dims.leg_reach() + 1e-9;
+        let s = &self.settings;
+        let weights = [s.weight_hip, s.weight_knee, s.weight_ankle];
+        let per_half = (s.samples as usize / 2).max(3);
+        let mut angles = Vec::with_capacity(per_half);
+        let mut total = 0.0;
+        let halves =
+            [(&self.stance, self.ms_before.phase, self.ds.phase), (&self.landing, self.ds.phase, self.ms_after.phase)];
+        for (leg, from, to) in halves {
+            let mut leg = leg.clone();
+            angles.clear();
+            let step = (to - from) / (per_half - 1) as f64;
+            for i in 0..per_half {
+                let phase = from + step * i as f64;
+                walker.project_stance(&plan, &mut leg, phase);
+                let pelvis = walker.pelvis_with_plan(&plan, phase);
+                let hip = pelvis.hip(leg.side.sign());
+                let target = walker.target_of(&leg, phase, hip);
+                most_extra = most_extra.max(target.extra_heel_rise);
+                if hip.distance(target.ankle) > limit || target.extra_heel_rise > self.heel_rise_allowance {
+                    return (None, most_extra);
+                }
+                let pose = solve_leg(r, hip, target);
+                let a = leg_angles(pelvis.rotation, &pose, leg.side.sign());
+                angles.push([
+                    a.hip_flex_deg.to_radians(),
+                    a.knee_flex_deg.to_radians(),
+                    a.ankle_dorsi_deg.to_radians(),
+                ]);
+            }
+            total += acceleration_cost(&angles, step * r.cycle_s, weights, s.cost);
+        }
+        // The landing leg must reach its footfall at heel strike, before the window starts.
+        let strike = self.landing.cycle_start;
+        let hip = walker.pelvis_with_plan(&plan, strike).hip(self.landing.side.sign());
+        if hip.distance(walker.target_of(&self.landing, strike, hip).ankle) > limit {
+            return (None, most_extra);
+        }
+        (Some(total), most_extra)
+    }
+
+    /// Samples the cost over the whole forward range at the problem's height (for plots).
+    #[must_use]
+    pub fn landscape(&self, walker: &Walker, count: usize) -> Vec<Candidate> {
+        let (lo, hi) = self.range;
+        (0..count.max(2))
+            .map(|i| {
+                let x = lo + (hi - lo) * i as f64 / (count.max(2) - 1) as f64;
+                Candidate { x, y: self.ds.y, cost: self.cost(walker, x, self.ds.y) }
+            })
+            .collect()
+    }
+
+    /// Runs the configured search. Returns every evaluation; the best feasible one is the
+    /// choice (the caller falls back when there is none).
+    #[must_use]
+    pub fn search(&self, walker: &Walker) -> Vec<Candidate> {
+        let mut memo = Evaluations { problem: self, walker, done: Vec::new() };
+        let (lo, hi) = self.range;
+        let y0 = self.ds.y;
+        let s = &self.settings;
+        let tol = s.tolerance_mm / 1000.0;
+        match s.method {
+            SearchMethod::Thesis => {
+                let n = s.candidates.max(2) as usize;
+                let spacing = (hi - lo) / (n - 1) as f64;
+                for i in 0..n {
+                    memo.at(lo + spacing * i as f64, y0);
+                }
+                if let Some(best) = memo.best() {
+                    let m = s.refine as usize;
+                    for k in 0..m {
+                        let offset = spacing * ((k as f64 + 0.5) / m as f64 - 0.5);
+                        memo.at((best.x + offset).clamp(lo, hi), y0);
+                    }
+                }
+            }
+            SearchMethod::Golden => {
+                golden(&mut |x| memo.at(x, y0), lo, hi, tol);
+            }
+            SearchMethod::Brent | SearchMethod::Joint => {
+                let (a, b) = memo.bracket(lo, hi, s.candidates.max(3) as usize, y0);
+                brent(&mut |x| memo.at(x, y0), a, b, tol);
+                if s.method == SearchMethod::Joint
+                    && let Some(best) = memo.best()
+                {
+                    let (ylo, yhi) = self.height_range;
+                    brent(&mut |y| memo.at(best.x, y), ylo, yhi, tol);
+                    let best = memo.best().expect("still there");
+                    let half = (hi - lo) / (2 * s.candidates.max(3)) as f64;
+                    brent(&mut |x| memo.at(x, best.y), (best.x - half).max(lo), (best.x + half).min(hi), tol);
+                }
+            }
+        }
+        memo.done
+    }
+}
+
+/// Evaluations made so far, so that no point is costed twice.
+struct Evaluations<'a> {
+    problem: &'a StepProblem,
+    walker: &'a Walker,
+    done: Vec<Candidate>,
+}
+
+impl Evaluations<'_> {
+    /// The cost at (x, y), +∞ where infeasible (so the searches walk away from it).
+    fn at(&mut self, x: f64, y: f64) -> f64 {
+        if let Some(c) = self.done.iter().find(|c| (c.x - x).abs() < 1e-12 && (c.y - y).abs() < 1e-12) {
+            return c.cost.unwrap_or(f64::INFINITY);
+        }
+        let cost = self.problem.cost(self.walker, x, y);
+        self.done.push(Candidate { x, y, cost });
+        cost.unwrap_or(f64::INFINITY)
+    }
+
+    fn best(&self) -> Option<Candidate> {
+        self.done
+            .iter()
+            .filter(|c| c.cost.is_some())
+            .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
+            .copied()
+    }
+
+    /// Evaluates `n` evenly spaced points and returns the interval of the best one's two
+    /// neighbours (the whole range if none is feasible).
+    fn bracket(&mut self, lo: f64, hi: f64, n: usize, y: f64) -> (f64, f64) {
+        let spacing = (hi - lo) / (n - 1) as f64;
+        for i in 0..n {
+            self.at(lo + spacing * i as f64, y);
+        }
+        match self.best() {
+            Some(b) => ((b.x - spacing).max(lo), (b.x + spacing).min(hi)),
+            None => (lo, hi),
+        }
+    }
+}
+
+const INV_PHI: f64 = 0.618_033_988_749_894_8;
+
+/// Golden-section search for a minimum of `f` on [a, b] to width `tol`.
+fn golden(f: &mut dyn FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f64) {
+    let mut c = b - INV_PHI * (b - a);
+    let mut d = a + INV_PHI * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    while (b - a).abs() > tol {
+        if fc < fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - INV_PHI * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + INV_PHI * (b - a);
+            fd = f(d);
+        }
+    }
+}
+
+/// Brent's method (parabolic interpolation safeguarded by golden sections) for a minimum of
+/// `f` on [a, b], to `tol` in x (Brent 1973, "localmin").
+fn brent(f: &mut dyn FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f64) {
+    const C: f64 = 1.0 - INV_PHI;
+    let mut x = a + C * (b - a);
+    let (mut w, mut v) = (x, x);
+    let mut fx = f(x);
+    let (mut fw, mut fv) = (fx, fx);
+    let (mut d, mut e) = (0.0f64, 0.0f64);
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        let tol1 = 1e-10 * x.abs() + tol / 3.0;
+        let tol2 = 2.0 * tol1;
+        if (x - m).abs() <= tol2 - 0.5 * (b - a) {
+            return;
+        }
+        let mut golden_step = true;
+        if e.abs() > tol1 && fx.is_finite() && fw.is_finite() && fv.is_finite() {
+            let r = (x - w) * (fx - fv);
+            let mut q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            } else {
+                q = -q;
+            }
+            if p.abs() < (0.5 * q * e).abs() && p > q * (a - x) && p < q * (b - x) {
+                e = d;
+                d = p / q;
+                let u = x + d;
+                if u - a < tol2 || b - u < tol2 {
+                    d = if x < m { tol1 } else { -tol1 };
+                }
+                golden_step = false;
+            }
+        }
+        if golden_step {
+            e = if x < m { b - x } else { a - x };
+            d = C * e;
+        }
+        let u = if d.abs() >= tol1 {
+            x + d
+        } else if d > 0.0 {
+            x + tol1
+        } else {
+            x - tol1
+        };
+        let fu = f(u);
+        if fu <= fx {
+            if u < x {
+                b = x;
+            } else {
+                a = x;
+            }
+            (v, fv) = (w, fw);
+            (w, fw) = (x, fx);
+            (x, fx) = (u, fu);
+        } else {
+            if u < x {
+                a = u;
+            } else {
+                b = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv) = (w, fw);
+                (w, fw) = (u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn searches_find_the_minimum_of_a_parabola() {
+        let target = 0.3713;
+        let mut evals = 0;
+        let mut f = |x: f64| {
+            evals += 1;
+            (x - target).powi(2) + 2.0
+        };
+        // golden and brent only report through f; track the best they saw.
+        let mut best = (f64::INFINITY, 0.0);
+        let mut g = |x: f64| {
+            let y = f(x);
+            if y < best.0 {
+                best = (y, x);
+            }
+            y
+        };
+        brent(&mut g, 0.0, 1.0, 1e-6);
+        assert!((best.1 - target).abs() < 1e-5, "{best:?}");
+        assert!(evals < 15, "brent used {evals}");
+        let mut best = (f64::INFINITY, 0.0);
+        golden(
+            &mut |x| {
+                let y = (x - target).powi(2);
+                if y < best.0 {
+                    best = (y, x);
+                }
+                y
+            },
+            0.0,
+            1.0,
+            1e-6,
+        );
+        assert!((best.1 - target).abs() < 1e-5);
+    }
+
+    #[test]
+    fn uniform_motion_costs_nothing_and_jerky_motion_costs_more() {
+        let dt = 0.02;
+        let uniform: Vec<[f64; 3]> =
+            (0..25).map(|i| [0.015625 * i as f64, 0.03125 * i as f64, -0.0078125 * i as f64]).collect();
+        let jerky: Vec<[f64; 3]> = (0..25)
+            .map(|i| {
+                [0.015625 * i as f64 + if i % 2 == 0 { 0.001 } else { 0.0 }, 0.03125 * i as f64, -0.0078125 * i as f64]
+            })
+            .collect();
+        let w = [1.0, 1.0, 1.0];
+        assert_eq!(acceleration_cost(&uniform, dt, w, CostForm::Squared), 0.0);
+        assert!(acceleration_cost(&jerky, dt, w, CostForm::Squared) > 0.0);
+        assert!(acceleration_cost(&jerky, dt, w, CostForm::Absolute) > 0.0);
+        // Weights scale their joint's term alone: the jerk is all in the hip.
+        let c1 = acceleration_cost(&jerky, dt, [1.0, 1.0, 1.0], CostForm::Squared);
+        let c3 = acceleration_cost(&jerky, dt, [3.0, 7.0, 9.0], CostForm::Squared);
+        assert!((c3 - 3.0 * c1).abs() < 1e-9 * c3);
+    }
+}
