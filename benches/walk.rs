@@ -1,9 +1,10 @@
 //! Speed of the walk model: one full-body frame update, the update that plans a swing at
-//! toe-off, and writing the joint table. Figures and machine in `benches/README.md`.
+//! toe-off, writing the joint table, and one step's pelvis optimisation by each method. Figures and machine in `benches/README.md`.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use gaitlab::config::presets;
 use gaitlab::model::body::Side;
+use gaitlab::model::params::SearchMethod;
 use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::output::joint_table;
@@ -52,8 +53,10 @@ fn frame_update(c: &mut Criterion) {
 }
 
 fn toe_off_planning(c: &mut Criterion) {
-    for name in ["default", "stairs_up"] {
-        let params = presets::params(name).unwrap().unwrap();
+    for (name, optimiser) in [("default", false), ("stairs_up", false), ("default", true), ("stairs_up", true)] {
+        let mut params = presets::params(name).unwrap().unwrap();
+        params.optimiser.enabled = optimiser;
+        let label = if optimiser { "with the thesis optimiser" } else { "optimiser off" };
         let mut w = Walker::new(&params).unwrap();
         let step = 0.001 * w.resolved().cycle_s;
         // Walk until one small step short of a right toe-off, on the stairs if there are any.
@@ -69,7 +72,7 @@ fn toe_off_planning(c: &mut Criterion) {
             }
             w = probe;
         }
-        c.bench_function(&format!("update with toe-off swing planning ({name})"), |b| {
+        c.bench_function(&format!("update with toe-off swing planning ({name}, {label})"), |b| {
             b.iter_batched(
                 || w.clone(),
                 |mut walker| {
@@ -94,5 +97,31 @@ fn joint_table_rows(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows);
+/// One step's pelvis choice, as the walk makes it at a toe-off: the fixed rule's cost (which
+/// sets the heel-rise allowance) and the search. Each method on the same step problems.
+fn optimiser(c: &mut Criterion) {
+    let mut group = c.benchmark_group("pelvis optimisation, one step");
+    for name in ["default", "stairs_down", "slope_down", "rough"] {
+        let params = presets::params(name).unwrap().unwrap();
+        let mut walker = Walker::new(&params).unwrap();
+        // The fourth step: on the stairs, slope or rough ground in those configs.
+        while walker.step_plans().len() < 6 {
+            walker.advance(1.0 / 60.0);
+        }
+        let problem = walker.last_step_problem().unwrap().clone();
+        for method in SearchMethod::ALL {
+            let mut p = problem.clone();
+            p.settings.method = method;
+            group.bench_function(format!("{name}/{}", method.name()), |b| {
+                b.iter(|| {
+                    let p = black_box(&p).clone().with_allowance(&walker);
+                    black_box(p.search(&walker).len())
+                });
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows, optimiser);
 criterion_main!(benches);

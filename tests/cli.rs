@@ -139,7 +139,14 @@ fn init_prints_the_default_config_and_presets_match_the_configs_folder() {
     let out = gaitlab(&["init"]);
     assert_eq!(out.status.code(), Some(0));
     let default = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml")).unwrap();
-    assert_eq!(text(&out.stdout), default, "configs/default.toml is `gaitlab init`'s output; regenerate it");
+    let printed = text(&out.stdout);
+    if let Some((n, (a, b))) = printed.lines().zip(default.lines()).enumerate().find(|(_, (a, b))| a != b) {
+        panic!(
+            "configs/default.toml differs from `gaitlab init` at line {}:\n  init: {a}\n  file: {b}\nregenerate it",
+            n + 1
+        );
+    }
+    assert_eq!(printed, default, "configs/default.toml is `gaitlab init`'s output; regenerate it");
     // Every preset's init output is itself a valid config giving the same walk parameters.
     let listed = text(&gaitlab(&["presets"]).stdout);
     let names: Vec<&str> = listed.lines().map(|l| l.split_whitespace().next().unwrap()).collect();
@@ -161,4 +168,97 @@ fn init_prints_the_default_config_and_presets_match_the_configs_folder() {
     let out = gaitlab(&["init", "--preset", "eldery"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("did you mean `elderly`?"));
+}
+
+fn config_path(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("configs").join(format!("{name}.toml")).display().to_string()
+}
+
+#[test]
+fn optimise_prints_a_line_per_step_and_the_summed_costs() {
+    let out = gaitlab(&["optimise", &config_path("default"), "--steps", "6"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    let lines: Vec<&str> = stdout.lines().filter(|l| !l.starts_with('#')).collect();
+    assert!(lines[0].split_whitespace().eq([
+        "step",
+        "side",
+        "phase",
+        "evals",
+        "feas",
+        "x_m",
+        "ratio",
+        "y_m",
+        "cost",
+        "fixed_cost",
+        "time_us",
+        "note"
+    ]));
+    assert_eq!(lines.len(), 1 + 6 + 1, "{stdout}");
+    for (i, row) in lines[1..7].iter().enumerate() {
+        let cols: Vec<&str> = row.split_whitespace().collect();
+        assert_eq!(cols[0], (i + 1).to_string());
+        assert!(cols[1] == "l" || cols[1] == "r");
+        let cost: f64 = cols[8].parse().unwrap();
+        let fixed: f64 = cols[9].parse().unwrap();
+        assert!(cost > 0.0 && cost <= fixed, "{row}");
+        assert!(cols[4].parse::<u32>().unwrap() >= 1);
+    }
+    let total = lines[7];
+    assert!(total.starts_with("total 6 steps: cost ") && total.contains("fixed rule (-"), "{total}");
+    assert!(total.contains("0 steps without a feasible candidate"), "{total}");
+}
+
+#[test]
+fn optimise_json_lines_carry_every_candidate_and_a_summary() {
+    let out = gaitlab(&[
+        "optimise",
+        &config_path("stairs_down"),
+        "--steps",
+        "4",
+        "--json",
+        "--set",
+        "optimiser.method=\"brent\"",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let values: Vec<serde_json::Value> =
+        text(&out.stdout).lines().map(|l| serde_json::from_str(l).expect("each line is JSON")).collect();
+    assert_eq!(values.len(), 5);
+    for (i, v) in values[..4].iter().enumerate() {
+        assert_eq!(v["step"], i as i64 + 1);
+        assert_eq!(v["method"], "brent");
+        let candidates = v["candidates"].as_array().unwrap();
+        assert_eq!(candidates.len() as u64, v["evaluations"].as_u64().unwrap());
+        let best = candidates.iter().filter_map(|c| c["cost"].as_f64()).fold(f64::INFINITY, f64::min);
+        assert_eq!(v["chosen"]["cost"].as_f64().unwrap(), best);
+        assert!(v["fixed_rule"]["cost"].as_f64().unwrap() >= best);
+    }
+    let summary = &values[4]["summary"];
+    assert_eq!(summary["steps"], 4);
+    assert_eq!(summary["infeasible_steps"], 0);
+    assert!(summary["cost_chosen"].as_f64().unwrap() <= summary["cost_fixed_rule"].as_f64().unwrap());
+}
+
+#[test]
+fn optimise_with_the_optimiser_off_and_with_bad_input() {
+    let out = gaitlab(&["optimise", &config_path("default"), "--steps", "3", "--set", "optimiser.enabled=false"]);
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = text(&out.stdout);
+    assert!(stdout.contains("method off (fixed rule)"));
+    assert_eq!(stdout.matches("optimiser off").count(), 3, "{stdout}");
+    assert!(stdout.contains("(+0.0%)"), "{stdout}");
+
+    let out = gaitlab(&["optimise", &config_path("default"), "--set", "optimiser.method=\"newton\""]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("optimiser.method") && stderr.contains("thesis"), "{stderr}");
+    assert!(out.stdout.is_empty());
+
+    let out = gaitlab(&["optimise", &config_path("default"), "--steps", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("valid: 1 to 100000"));
+
+    let out = gaitlab(&["optimise", "no/such/config.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("no/such/config.toml"));
 }

@@ -206,7 +206,7 @@ pub static PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "optimiser.method",
         unit: "",
-        doc: "Search: thesis (two levels of candidates), golden (golden section), brent (bracket by the first level, then Brent), joint (Brent on position and height)",
+        doc: "Search: thesis (two levels of candidates), golden / brent (the thesis's levels, then golden section / Brent around the best), joint (as brent, then on the height too)",
         kind: Kind::Choice(METHODS),
         get: |p| Value::Word(p.optimiser.method.name()),
         set: |p, v| {
@@ -218,7 +218,7 @@ pub static PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "optimiser.candidates",
         unit: "",
-        doc: "Thesis method: evenly spaced candidates over the range (first level; brent uses it to bracket)",
+        doc: "Evenly spaced candidates over the range: the first level, with which every method starts",
         kind: Kind::Int { min: 3, max: 50 },
         get: |p| Value::Int(i64::from(p.optimiser.candidates)),
         set: |p, v| {
@@ -230,7 +230,7 @@ pub static PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "optimiser.refine",
         unit: "",
-        doc: "Thesis method: candidates spread around the best of the first level (second level; 0 for one level)",
+        doc: "Candidates spread around the first level's best: the second level (0: none); golden, brent and joint then refine its best",
         kind: Kind::Int { min: 0, max: 50 },
         get: |p| Value::Int(i64::from(p.optimiser.refine)),
         set: |p, v| {

@@ -20,9 +20,9 @@
 
 use crate::model::body::Side;
 use crate::model::params::{CostForm, OptimiserParams, SearchMethod};
-use crate::model::walk::frame::leg_angles;
+use crate::model::walk::frame::sagittal_leg_angles;
 use crate::model::walk::leg::LegState;
-use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan};
+use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose};
 use crate::model::walk::{Walker, solve_leg};
 
 /// Extra heel rise past the curve (deg) that a candidate may ask of a stance leg beyond what
@@ -130,6 +130,12 @@ pub struct StepProblem {
     /// The most extra heel rise (rad) a candidate may ask of a stance leg: the fixed rule's
     /// own plus [`HEEL_RISE_SLACK_DEG`] (set by [`StepProblem::with_allowance`]).
     pub heel_rise_allowance: f64,
+    /// The fixed rule's cost, found while setting the allowance (`None` if it cannot reach).
+    pub fixed_rule_cost: Option<f64>,
+    /// The pelvis pose at each sample of the window, but for its forward position and height,
+    /// which are all that a candidate changes (filled by [`StepProblem::with_allowance`];
+    /// empty means "compute every pose").
+    pub(crate) orientations: Vec<PelvisPose>,
 }
 
 impl StepProblem {
@@ -151,9 +157,31 @@ impl StepProblem {
     #[must_use]
     pub fn with_allowance(mut self, walker: &Walker) -> StepProblem {
         self.heel_rise_allowance = f64::INFINITY;
-        let (_, fixed_rule_extra) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
+        // The cache pays for itself from the second evaluation on; with the optimiser off the
+        // fixed rule's is the only one.
+        if self.settings.enabled {
+            let plan = self.plan.clone();
+            self.orientations = self.sample_phases().map(|phase| walker.pelvis_with_plan(&plan, phase)).collect();
+        }
+        let (cost, fixed_rule_extra) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
         self.heel_rise_allowance = fixed_rule_extra.max(0.0) + HEEL_RISE_SLACK_DEG.to_radians();
+        self.fixed_rule_cost = cost;
         self
+    }
+
+    /// The master phases of the samples: `samples / 2` from the stance leg's mid-stance to
+    /// the double support, as many from there to the landing leg's mid-stance.
+    fn sample_phases(&self) -> impl Iterator<Item = f64> + use<> {
+        let per_half = self.per_half();
+        let halves = [(self.ms_before.phase, self.ds.phase), (self.ds.phase, self.ms_after.phase)];
+        halves.into_iter().flat_map(move |(from, to)| {
+            let step = (to - from) / (per_half - 1) as f64;
+            (0..per_half).map(move |i| from + step * i as f64)
+        })
+    }
+
+    fn per_half(&self) -> usize {
+        (self.settings.samples as usize / 2).max(3)
     }
 
     /// The cost (as [`StepProblem::cost`]) and the most extra heel rise a stance leg needed
@@ -168,19 +196,26 @@ impl StepProblem {
         let limit = r.reach_margin * r.dims.leg_reach() + 1e-9;
         let s = &self.settings;
         let weights = [s.weight_hip, s.weight_knee, s.weight_ankle];
-        let per_half = (s.samples as usize / 2).max(3);
+        let per_half = self.per_half();
         let mut angles = Vec::with_capacity(per_half);
         let mut total = 0.0;
         let halves =
             [(&self.stance, self.ms_before.phase, self.ds.phase), (&self.landing, self.ds.phase, self.ms_after.phase)];
-        for (leg, from, to) in halves {
+        for (half, (leg, from, to)) in halves.into_iter().enumerate() {
             let mut leg = leg.clone();
             angles.clear();
             let step = (to - from) / (per_half - 1) as f64;
             for i in 0..per_half {
                 let phase = from + step * i as f64;
                 walker.project_stance(&plan, &mut leg, phase);
-                let pelvis = walker.pelvis_with_plan(&plan, phase);
+                let pelvis = match self.orientations.get(half * per_half + i) {
+                    Some(cached) => {
+                        let mut pose = *cached;
+                        (pose.position.x, pose.position.y) = walker.pelvis_position_with_plan(&plan, phase);
+                        pose
+                    }
+                    None => walker.pelvis_with_plan(&plan, phase),
+                };
                 let hip = pelvis.hip(leg.side.sign());
                 let target = walker.target_of(&leg, phase, hip);
                 most_extra = most_extra.max(target.extra_heel_rise);
@@ -188,12 +223,7 @@ impl StepProblem {
                     return (None, most_extra);
                 }
                 let pose = solve_leg(r, hip, target);
-                let a = leg_angles(pelvis.rotation, &pose, leg.side.sign());
-                angles.push([
-                    a.hip_flex_deg.to_radians(),
-                    a.knee_flex_deg.to_radians(),
-                    a.ankle_dorsi_deg.to_radians(),
-                ]);
+                angles.push(sagittal_leg_angles(pelvis.rotation, &pose));
             }
             total += acceleration_cost(&angles, step * r.cycle_s, weights, s.cost);
         }
@@ -218,45 +248,53 @@ impl StepProblem {
             .collect()
     }
 
-    /// Runs the configured search. Returns every evaluation; the best feasible one is the
-    /// choice (the caller falls back when there is none).
+    /// Runs the configured search. Returns every evaluation, the fixed rule's first when
+    /// [`StepProblem::with_allowance`] has costed it; the best feasible one is the choice (the
+    /// caller falls back when there is none).
     #[must_use]
     pub fn search(&self, walker: &Walker) -> Vec<Candidate> {
-        let mut memo = Evaluations { problem: self, walker, done: Vec::new() };
+        // The fixed rule's position is the middle of the range, so with an odd first level it
+        // is one of its candidates: its cost, found while setting the allowance, is reused.
+        let done = if self.heel_rise_allowance.is_finite() {
+            vec![Candidate { x: self.fixed_rule_x(), y: self.ds.y, cost: self.fixed_rule_cost }]
+        } else {
+            Vec::new()
+        };
+        let mut memo = Evaluations { problem: self, walker, done };
         let (lo, hi) = self.range;
         let y0 = self.ds.y;
         let s = &self.settings;
         let tol = s.tolerance_mm / 1000.0;
+        // Every method starts with the thesis's two levels: they find the feasible band
+        // (which can be narrow, with +∞ on both sides) and give the refined searches a
+        // bracket in which the cost is nearly always unimodal; and since the memo keeps
+        // those points, a refined search can never end above the thesis's choice.
+        let n = s.candidates.max(2) as usize;
+        let spacing = (hi - lo) / (n - 1) as f64;
+        for i in 0..n {
+            memo.at(lo + spacing * i as f64, y0);
+        }
+        let Some(coarse) = memo.best() else { return memo.done };
+
+        let m = s.refine.max(1) as usize;
+        let fine = spacing / m as f64;
+        for k in 0..m {
+            let offset = spacing * ((k as f64 + 0.5) / m as f64 - 0.5);
+            memo.at((coarse.x + offset).clamp(lo, hi), y0);
+        }
+        let best = memo.best().expect("the coarse best is feasible");
+        let (a, b) = ((best.x - fine).max(lo), (best.x + fine).min(hi));
         match s.method {
-            SearchMethod::Thesis => {
-                let n = s.candidates.max(2) as usize;
-                let spacing = (hi - lo) / (n - 1) as f64;
-                for i in 0..n {
-                    memo.at(lo + spacing * i as f64, y0);
-                }
-                if let Some(best) = memo.best() {
-                    let m = s.refine as usize;
-                    for k in 0..m {
-                        let offset = spacing * ((k as f64 + 0.5) / m as f64 - 0.5);
-                        memo.at((best.x + offset).clamp(lo, hi), y0);
-                    }
-                }
-            }
-            SearchMethod::Golden => {
-                golden(&mut |x| memo.at(x, y0), lo, hi, tol);
-            }
-            SearchMethod::Brent | SearchMethod::Joint => {
-                let (a, b) = memo.bracket(lo, hi, s.candidates.max(3) as usize, y0);
+            SearchMethod::Thesis => {}
+            SearchMethod::Golden => golden(&mut |x| memo.at(x, y0), a, b, tol),
+            SearchMethod::Brent => brent(&mut |x| memo.at(x, y0), a, b, tol),
+            SearchMethod::Joint => {
                 brent(&mut |x| memo.at(x, y0), a, b, tol);
-                if s.method == SearchMethod::Joint
-                    && let Some(best) = memo.best()
-                {
-                    let (ylo, yhi) = self.height_range;
-                    brent(&mut |y| memo.at(best.x, y), ylo, yhi, tol);
-                    let best = memo.best().expect("still there");
-                    let half = (hi - lo) / (2 * s.candidates.max(3)) as f64;
-                    brent(&mut |x| memo.at(x, best.y), (best.x - half).max(lo), (best.x + half).min(hi), tol);
-                }
+                let best = memo.best().expect("still there");
+                let (ylo, yhi) = self.height_range;
+                brent(&mut |y| memo.at(best.x, y), ylo, yhi, tol);
+                let best = memo.best().expect("still there");
+                brent(&mut |x| memo.at(x, best.y), (best.x - fine).max(lo), (best.x + fine).min(hi), tol);
             }
         }
         memo.done
@@ -273,7 +311,7 @@ struct Evaluations<'a> {
 impl Evaluations<'_> {
     /// The cost at (x, y), +∞ where infeasible (so the searches walk away from it).
     fn at(&mut self, x: f64, y: f64) -> f64 {
-        if let Some(c) = self.done.iter().find(|c| (c.x - x).abs() < 1e-12 && (c.y - y).abs() < 1e-12) {
+        if let Some(c) = self.done.iter().find(|c| (c.x - x).abs() < 1e-9 && (c.y - y).abs() < 1e-9) {
             return c.cost.unwrap_or(f64::INFINITY);
         }
         let cost = self.problem.cost(self.walker, x, y);
@@ -287,19 +325,6 @@ impl Evaluations<'_> {
             .filter(|c| c.cost.is_some())
             .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
             .copied()
-    }
-
-    /// Evaluates `n` evenly spaced points and returns the interval of the best one's two
-    /// neighbours (the whole range if none is feasible).
-    fn bracket(&mut self, lo: f64, hi: f64, n: usize, y: f64) -> (f64, f64) {
-        let spacing = (hi - lo) / (n - 1) as f64;
-        for i in 0..n {
-            self.at(lo + spacing * i as f64, y);
-        }
-        match self.best() {
-            Some(b) => ((b.x - spacing).max(lo), (b.x + spacing).min(hi)),
-            None => (lo, hi),
-        }
     }
 }
 

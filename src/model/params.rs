@@ -89,11 +89,11 @@ pub struct IkParams {
 pub enum SearchMethod {
     /// The thesis's two levels: evenly spaced candidates, then a finer set around the best.
     Thesis,
-    /// Golden-section search on the cost over the whole range.
+    /// The thesis's two levels, then golden-section search around their best.
     Golden,
-    /// The thesis's first level to bracket the best, then Brent's method inside the bracket.
+    /// The thesis's two levels, then Brent's method around their best.
     Brent,
-    /// Brent on the forward position, then on the height, then on the position again
+    /// As `Brent`, then Brent on the height, then on the position again
     /// (Chung & Hahn search both).
     Joint,
 }

@@ -111,9 +111,25 @@ pub struct LegAngles {
 /// by the joint table and the pelvis optimisation's cost, so both measure the same thing.
 #[must_use]
 pub fn leg_angles(pelvis: DQuat, leg: &LegPose, side_sign: f64) -> LegAngles {
+    let [hip_flex, knee, ankle] = sagittal_leg_angles(pelvis, leg);
+    let thigh = (leg.knee - leg.hip).normalize();
+    let (_, hip_abd) = sagittal_and_frontal(pelvis, thigh, side_sign);
+    LegAngles {
+        hip_flex_deg: hip_flex.to_degrees(),
+        hip_abd_deg: hip_abd.to_degrees(),
+        knee_flex_deg: knee.to_degrees(),
+        ankle_dorsi_deg: ankle.to_degrees(),
+    }
+}
+
+/// Hip flexion, knee flexion and ankle dorsiflexion (rad) of a solved leg: the three angles
+/// of [`leg_angles`] that the pelvis optimisation's cost differentiates.
+#[must_use]
+pub fn sagittal_leg_angles(pelvis: DQuat, leg: &LegPose) -> [f64; 3] {
     let thigh = (leg.knee - leg.hip).normalize();
     let shank = (leg.ankle - leg.knee).normalize();
-    let (hip_flex, hip_abd) = sagittal_and_frontal(pelvis, thigh, side_sign);
+    let d = pelvis.inverse() * thigh;
+    let hip_flex = d.x.atan2(-d.y);
     let knee = thigh.dot(shank).clamp(-1.0, 1.0).acos();
     // The shank's frame: y up along the shank, z on the knee hinge, x forward.
     let hinge = (leg.ankle - leg.hip).cross(leg.swivel).normalize_or(DVec3::Z);
@@ -122,12 +138,7 @@ pub fn leg_angles(pelvis: DQuat, leg: &LegPose, side_sign: f64) -> LegAngles {
     let x = y.cross(z);
     let foot_forward = leg.foot * DVec3::X;
     let ankle = foot_forward.dot(y).atan2(foot_forward.dot(x));
-    LegAngles {
-        hip_flex_deg: hip_flex.to_degrees(),
-        hip_abd_deg: hip_abd.to_degrees(),
-        knee_flex_deg: knee.to_degrees(),
-        ankle_dorsi_deg: ankle.to_degrees(),
-    }
+    [hip_flex, knee, ankle]
 }
 
 /// Flexion of a limb segment pointing along `dir` (world), measured in the sagittal plane of

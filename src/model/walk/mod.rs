@@ -356,7 +356,14 @@ impl Walker {
         self.pelvis_with_plan(&self.plan, phase)
     }
 
-    /// The pelvis at `phase` under a given plan (the optimiser tries candidate plans).
+    /// Forward position and height of the pelvis at `phase` under a given plan (the optimiser
+    /// tries candidate plans; the rest of the pose does not depend on the plan).
+    #[must_use]
+    pub fn pelvis_position_with_plan(&self, plan: &PelvisPlan, phase: f64) -> (f64, f64) {
+        plan.position(phase, &self.traj)
+    }
+
+    /// The pelvis at `phase` under a given plan.
     #[must_use]
     pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
         let (x, y) = plan.position(phase, &self.traj);
@@ -535,6 +542,7 @@ impl Walker {
         ds: PelvisKey,
         ms_after: PelvisKey,
     ) -> StepRecord {
+        let started = std::time::Instant::now();
         let settings = self.params.optimiser.clone();
         let half_range = 0.5 * settings.range_pct / 100.0 * (ms_after.x - ms_before.x);
         let centre = 0.5 * (ms_before.x + ms_after.x);
@@ -549,11 +557,12 @@ impl Walker {
             height_range: (ds.y - 0.03, ds.y + 0.01),
             settings,
             heel_rise_allowance: f64::INFINITY,
+            fixed_rule_cost: None,
+            orientations: Vec::new(),
         }
         .with_allowance(self);
-        let started = std::time::Instant::now();
         let fixed_x = problem.fixed_rule_x();
-        let fixed_rule = Candidate { x: fixed_x, y: ds.y, cost: problem.cost(self, fixed_x, ds.y) };
+        let fixed_rule = Candidate { x: fixed_x, y: ds.y, cost: problem.fixed_rule_cost };
         let (method, candidates) = if problem.settings.enabled {
             (Some(problem.settings.method), problem.search(self))
         } else {
@@ -768,11 +777,13 @@ impl Walker {
         let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
         let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
         let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
-        self.legs[i].footfall = to;
-        self.legs[i].strike_angle = strike_angle;
-        guard_drop += self.guard_stance_reach(side, strike_phase, Some(&plan));
-        self.legs[i].footfall = saved_footfall;
-        self.legs[i].strike_angle = saved_strike;
+        if (record.chosen.x, record.chosen.y) != (ds.x, ds.y) {
+            self.legs[i].footfall = to;
+            self.legs[i].strike_angle = strike_angle;
+            guard_drop += self.guard_stance_reach(side, strike_phase, Some(&plan));
+            self.legs[i].footfall = saved_footfall;
+            self.legs[i].strike_angle = saved_strike;
+        }
         // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
         // foot would touch the ground.
         self.simulate_swing(side, at, &mut plan);
@@ -1129,7 +1140,8 @@ pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
     let reference = DVec3::new(cos_yaw, 0.0, -sin_yaw);
     let ik = solve_two_bone(hip, target.ankle, dims.thigh, dims.shank, reference);
     let foot = foot_rotation(target.yaw, target.pitch);
-    let toe = foot * DQuat::from_rotation_z(target.toe_bend);
+    // Flat-footed stance has no toe bend; skipping the rotation saves a sin/cos per solve.
+    let toe = if target.toe_bend == 0.0 { foot } else { foot * DQuat::from_rotation_z(target.toe_bend) };
     let heel = ik.end + foot * dims.heel_local();
     let ball = ik.end + foot * dims.ball_local();
     let toe_tip = ball + toe * DVec3::new(dims.toe_length(), 0.0, 0.0);
@@ -1156,4 +1168,45 @@ pub fn bone_frame(along: DVec3, hinge: DVec3) -> DQuat {
     let z = (hinge - y * y.dot(hinge)).normalize();
     let x = y.cross(z);
     DQuat::from_mat3(&glam::DMat3::from_cols(x, y, z))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::presets;
+
+    #[test]
+    fn a_step_with_no_feasible_candidate_keeps_the_previous_ratio_and_is_counted() {
+        let params = presets::params("default").unwrap().unwrap();
+        let mut walker = Walker::new(&params).unwrap();
+        while walker.step_plans().len() < 4 {
+            walker.advance(1.0 / 60.0);
+        }
+        let problem = walker.last_step_problem().unwrap().clone();
+        let previous_ratio = walker.last_ds_ratio;
+        // The same question, but the landing foot a metre further on: out of every
+        // candidate's reach at heel strike.
+        let mut landing = problem.landing.clone();
+        landing.footfall.heel.x += 1.0;
+        landing.anchor.x += 1.0;
+        let before = walker.infeasible_steps();
+        let record = walker.choose_double_support(
+            landing.side,
+            problem.ds.phase,
+            99,
+            landing,
+            problem.ms_before,
+            problem.ds,
+            problem.ms_after,
+        );
+        assert!(record.fallback);
+        assert_eq!(record.feasible, 0);
+        assert!(record.evaluations >= 5);
+        assert_eq!(walker.infeasible_steps(), before + 1);
+        assert!((record.chosen_ratio() - previous_ratio).abs() < 1e-12);
+        assert!(record.chosen.x.is_finite() && record.chosen.y.is_finite());
+        assert!(record.chosen.cost.is_none_or(f64::is_finite));
+        let key = walker.plan.last_of(KeyKind::DoubleSupport).unwrap();
+        assert_eq!((key.x, key.y), (record.chosen.x, record.chosen.y));
+    }
 }
