@@ -19,14 +19,39 @@ pub type ExitCode = i32;
 pub struct Cli {
     /// Config for the terminal lab (the embedded default without one).
     pub config: Option<PathBuf>,
+    /// The lab's options, when started without a command.
+    #[command(flatten)]
+    pub lab: LabArgs,
     /// The command; without one, the terminal lab.
     #[command(subcommand)]
     pub command: Option<Command>,
 }
 
+/// Options of the terminal lab.
+#[derive(Debug, Clone, clap::Args)]
+pub struct LabArgs {
+    /// Redraws per second while walking (nothing is drawn when paused and idle)
+    #[arg(long, default_value_t = 30.0)]
+    pub fps: f64,
+    /// How curves and the figure are drawn: braille, halfblock or block (for fonts without braille)
+    #[arg(long, default_value = "braille")]
+    pub marker: String,
+    /// Override a key: --set walk.speed_mps=1.4 (repeatable)
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub sets: Vec<String>,
+}
+
 /// The commands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// The terminal lab (the same as no command)
+    Tui {
+        /// Config file [default: the embedded default]
+        config: Option<PathBuf>,
+        /// The lab's options.
+        #[command(flatten)]
+        lab: LabArgs,
+    },
     /// Validate configs: prints `ok: PATH` or one line per problem, PATH:LINE:COL: key: message
     Check {
         /// Config files.
@@ -95,21 +120,8 @@ pub fn load_config(path: &Path, sets: &[String]) -> Result<WalkParams, ExitCode>
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
-        None => match cli.config {
-            None => {
-                let _ = <Cli as clap::CommandFactory>::command().print_help();
-                println!("\n\nThe terminal lab is not built yet; use `gaitlab simulate CONFIG` meanwhile.");
-                0
-            }
-            Some(path) => {
-                eprintln!(
-                    "gaitlab: the terminal lab (gaitlab {}) is not built yet; try `gaitlab simulate {}`",
-                    path.display(),
-                    path.display()
-                );
-                2
-            }
-        },
+        None => lab(cli.config, &cli.lab),
+        Some(Command::Tui { config, lab: args }) => lab(config.or(cli.config), &args),
         Some(Command::Check { configs, sets }) => check(&configs, &sets),
         Some(Command::Simulate { config, cycles, fps, out, sets }) => {
             simulate(&config, cycles, fps, out.as_deref(), &sets)
@@ -123,6 +135,15 @@ pub fn run(cli: Cli) -> ExitCode {
         }
         Some(Command::Init { preset }) => init(preset.as_deref()),
     }
+}
+
+fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
+    let Some(&(_, marker)) = crate::tui::MARKERS.iter().find(|(n, _)| *n == args.marker) else {
+        let names: Vec<&str> = crate::tui::MARKERS.iter().map(|(n, _)| *n).collect();
+        eprintln!("gaitlab: --marker {}: unknown; valid: {}", args.marker, names.join(", "));
+        return 2;
+    };
+    crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker })
 }
 
 fn check(configs: &[PathBuf], sets: &[String]) -> ExitCode {

@@ -1,0 +1,751 @@
+//! The lab's state and what keys do to it. No terminal here: the loop in `tui/mod.rs` feeds
+//! it keys and time, the widgets in `tui/ui` draw it, and tests drive it directly.
+
+use super::keys::{Action, action_of};
+use super::save;
+use crate::config::render::{derived_value, toml_number};
+use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
+use crate::config::{self, Loader, presets};
+use crate::model::optimise::{Candidate, StepRecord};
+use crate::model::params::{SearchMethod, WalkParams};
+use crate::model::walk::Walker;
+use crate::model::walk::frame::Frame;
+use ratatui::crossterm::event::{KeyCode, KeyEvent};
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+/// Simulation speeds offered by `[` and `]`.
+const SPEEDS: [f64; 6] = [0.125, 0.25, 0.5, 1.0, 2.0, 4.0];
+
+/// Joint-angle samples kept for the traces: three cycles at 60 samples a second is plenty.
+const TRACE_LEN: usize = 240;
+
+/// The walk as seen from the side or from the front.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    /// Sagittal plane: x forward to the right, y up.
+    Side,
+    /// Frontal plane: z (right) to the left, as when facing the walker; y up.
+    Front,
+}
+
+/// The panel shown beside the walk on narrow screens.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Panel {
+    /// The parameter editor.
+    Editor,
+    /// Curve charts.
+    Curves,
+    /// Joint angle traces.
+    Joints,
+    /// The optimiser's choices and landscape.
+    Optimiser,
+}
+
+impl Panel {
+    /// Every panel, in tab order.
+    pub const ALL: [Panel; 4] = [Panel::Editor, Panel::Curves, Panel::Joints, Panel::Optimiser];
+
+    /// Its tab title.
+    #[must_use]
+    pub fn title(self) -> &'static str {
+        match self {
+            Panel::Editor => "Parameters",
+            Panel::Curves => "Curves",
+            Panel::Joints => "Joints",
+            Panel::Optimiser => "Optimiser",
+        }
+    }
+}
+
+/// A modal question or list on top of the screen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Overlay {
+    /// The key list.
+    Help,
+    /// Typing a value for the selected key.
+    Typing {
+        /// Text typed so far.
+        text: String,
+        /// Why the last Enter was refused.
+        error: Option<String>,
+    },
+    /// Typing a path to save to.
+    SavePath {
+        /// Text typed so far.
+        text: String,
+        /// Why the last Enter was refused.
+        error: Option<String>,
+    },
+    /// Quit with unsaved edits?
+    ConfirmQuit,
+    /// Choosing from a list.
+    Pick {
+        /// What is picked.
+        what: PickKind,
+        /// The choices.
+        items: Vec<String>,
+        /// The highlighted one.
+        selected: usize,
+    },
+}
+
+/// What a pick list chooses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PickKind {
+    /// A preset, whose parameters replace the current ones (one undoable edit).
+    Preset,
+    /// `terrain.kind`.
+    Terrain,
+}
+
+/// One undoable edit: the whole parameter set before and after, and what changed.
+#[derive(Clone, Debug)]
+struct Edit {
+    before: WalkParams,
+    after: WalkParams,
+    what: String,
+}
+
+/// A curve chart's choice.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurveView {
+    /// Pelvic rotation (deg) over the right leg's cycle.
+    PelvisRotation,
+    /// Pelvic obliquity (deg).
+    PelvisObliquity,
+    /// Pelvic tilt (deg).
+    PelvisTilt,
+    /// Pelvis height's shape between keys.
+    PelvisVertical,
+    /// Lateral pelvis position (cm).
+    PelvisLateral,
+    /// Forward progress between keys, both halves.
+    PelvisForward,
+    /// The swinging foot's forward progress.
+    SwingForward,
+    /// The swinging foot's lateral weight.
+    SwingLateral,
+    /// Heel height of the swinging foot (cm): the design and the step's adapted curve.
+    SwingHeelHeight,
+    /// Foot pitch through the swing (deg): design and adapted.
+    Ankle,
+    /// Heel rise (foot–ground angle, deg).
+    HeelRise,
+}
+
+impl CurveView {
+    /// Every chart, in `c` order.
+    pub const ALL: [CurveView; 11] = [
+        CurveView::PelvisRotation,
+        CurveView::PelvisObliquity,
+        CurveView::PelvisTilt,
+        CurveView::PelvisVertical,
+        CurveView::PelvisLateral,
+        CurveView::PelvisForward,
+        CurveView::SwingForward,
+        CurveView::SwingLateral,
+        CurveView::SwingHeelHeight,
+        CurveView::Ankle,
+        CurveView::HeelRise,
+    ];
+
+    /// Chart title with its unit.
+    #[must_use]
+    pub fn title(self) -> &'static str {
+        match self {
+            CurveView::PelvisRotation => "pelvic rotation (deg)",
+            CurveView::PelvisObliquity => "pelvic obliquity (deg)",
+            CurveView::PelvisTilt => "pelvic tilt (deg)",
+            CurveView::PelvisVertical => "pelvis vertical shape (0-1)",
+            CurveView::PelvisLateral => "pelvis lateral (cm)",
+            CurveView::PelvisForward => "pelvis forward ds>ms, ms>ds (0-1)",
+            CurveView::SwingForward => "swing foot forward (0-1)",
+            CurveView::SwingLateral => "swing foot lateral (0-1)",
+            CurveView::SwingHeelHeight => "swing heel height (cm)",
+            CurveView::Ankle => "swing foot pitch (deg)",
+            CurveView::HeelRise => "heel rise (deg)",
+        }
+    }
+}
+
+/// The lab.
+pub struct App {
+    /// The config file edits are saved to (`None`: the embedded default, saved with a path
+    /// the user types).
+    pub path: Option<PathBuf>,
+    /// The text the saved file is built from (comments and layout kept).
+    pub source_text: String,
+    /// Parameters in force.
+    pub params: WalkParams,
+    /// Parameters as last loaded or saved (changed keys are marked against these).
+    pub saved: WalkParams,
+    /// The walk.
+    pub walker: Walker,
+    /// The latest frame of the walk.
+    pub frame: Frame,
+    frame_count: u64,
+    /// Joint angles of recent frames: time (s), then hip, knee, ankle right, then left (deg).
+    pub traces: VecDeque<(f64, [f64; 6])>,
+    /// Paused.
+    pub paused: bool,
+    speed_index: usize,
+    /// Side or frontal view.
+    pub view: View,
+    /// Curve chart shown (single mode) or first in the grid.
+    pub curve: usize,
+    /// Several curves at once.
+    pub grid: bool,
+    /// Panel beside the walk on narrow screens.
+    pub panel: Panel,
+    /// The selected parameter (index into [`PARAMS`]).
+    pub selected: usize,
+    /// What is on top, if anything.
+    pub overlay: Option<Overlay>,
+    /// A line for the status bar.
+    pub message: Option<String>,
+    undo: Vec<Edit>,
+    redo: Vec<Edit>,
+    /// Quit requested and granted.
+    pub quit: bool,
+    /// Cost landscape of the last step: its step number and samples.
+    pub landscape: Option<(i64, Vec<Candidate>)>,
+    /// A re-run of the optimiser on the last step, with the method it used.
+    pub rerun: Option<StepRecord>,
+    /// Frames drawn per second, measured by the loop (`None` in tests: nothing to measure).
+    pub measured_fps: Option<f64>,
+    /// The simulation frame step (s).
+    pub sim_dt: f64,
+    /// Show wall-clock figures (search times); off in tests, whose screens must repeat.
+    pub show_timings: bool,
+}
+
+impl App {
+    /// A lab on `params`, read from `source_text` (the file at `path`, or the embedded default).
+    pub fn new(params: WalkParams, source_text: String, path: Option<PathBuf>) -> Result<Self, String> {
+        let walker = Walker::new(&params).map_err(|e| e.to_string())?;
+        let frame = walker.frame(0);
+        let mut app = App {
+            path,
+            source_text,
+            saved: params.clone(),
+            params,
+            walker,
+            frame,
+            frame_count: 0,
+            traces: VecDeque::with_capacity(TRACE_LEN),
+            paused: false,
+            speed_index: 3,
+            view: View::Side,
+            curve: 0,
+            grid: false,
+            panel: Panel::Editor,
+            selected: PARAMS.iter().position(|p| p.key == "walk.speed_mps").unwrap_or(0),
+            overlay: None,
+            message: None,
+            undo: Vec::new(),
+            redo: Vec::new(),
+            quit: false,
+            landscape: None,
+            rerun: None,
+            measured_fps: None,
+            sim_dt: 1.0 / 60.0,
+            show_timings: false,
+        };
+        app.record_trace();
+        Ok(app)
+    }
+
+    /// The embedded default config, unsaved to any path.
+    pub fn with_default() -> Result<Self, String> {
+        let params = presets::params("default").expect("listed").map_err(|e| e.to_string())?;
+        App::new(params, presets::default_text().to_string(), None)
+    }
+
+    /// The simulation speed factor.
+    #[must_use]
+    pub fn speed(&self) -> f64 {
+        SPEEDS[self.speed_index]
+    }
+
+    /// The file name shown in the status bar.
+    #[must_use]
+    pub fn file_label(&self) -> String {
+        self.path.as_ref().map_or_else(|| "(embedded default)".to_string(), |p| p.display().to_string())
+    }
+
+    /// Keys whose value differs from the saved file.
+    #[must_use]
+    pub fn changed_keys(&self) -> Vec<&'static str> {
+        PARAMS.iter().filter(|s| (s.get)(&self.params) != (s.get)(&self.saved)).map(|s| s.key).collect()
+    }
+
+    /// Whether anything differs from the saved file (curve overrides included).
+    #[must_use]
+    pub fn is_modified(&self) -> bool {
+        self.params != self.saved
+    }
+
+    /// Walks on by `wall_dt` seconds of real time (scaled by the speed), in frames of at most
+    /// [`App::sim_dt`]; does nothing while paused. Returns whether anything moved.
+    pub fn tick(&mut self, wall_dt: f64) -> bool {
+        if self.paused {
+            return false;
+        }
+        let mut left = wall_dt * self.speed();
+        let mut moved = false;
+        while left > 1e-9 {
+            let dt = left.min(self.sim_dt);
+            self.advance(dt);
+            left -= dt;
+            moved = true;
+        }
+        moved
+    }
+
+    fn advance(&mut self, dt: f64) {
+        self.walker.advance(dt);
+        self.frame_count += 1;
+        self.frame = self.walker.frame(self.frame_count);
+        self.record_trace();
+        self.refresh_landscape();
+    }
+
+    fn record_trace(&mut self) {
+        let [r, l] = &self.frame.legs;
+        if self.traces.len() == TRACE_LEN {
+            self.traces.pop_front();
+        }
+        self.traces.push_back((
+            self.frame.time_s,
+            [r.hip_flex_deg, r.knee_flex_deg, r.ankle_dorsi_deg, l.hip_flex_deg, l.knee_flex_deg, l.ankle_dorsi_deg],
+        ));
+    }
+
+    /// Recomputes the landscape when a new step has been planned (once a step: 41 costs).
+    fn refresh_landscape(&mut self) {
+        let Some(last) = self.walker.step_plans().last() else { return };
+        if self.landscape.as_ref().is_some_and(|(step, _)| *step == last.step) {
+            return;
+        }
+        if let Some(problem) = self.walker.last_step_problem() {
+            self.landscape = Some((last.step, problem.landscape(&self.walker, 41)));
+        }
+    }
+
+    /// Starts the walk again from standing with the current parameters.
+    pub fn restart(&mut self) {
+        match Walker::new(&self.params) {
+            Ok(w) => {
+                self.walker = w;
+                self.frame_count = 0;
+                self.frame = self.walker.frame(0);
+                self.traces.clear();
+                self.record_trace();
+                self.landscape = None;
+                self.rerun = None;
+            }
+            Err(e) => self.message = Some(format!("cannot restart: {e}")),
+        }
+    }
+
+    /// Handles one key press.
+    pub fn on_key(&mut self, key: KeyEvent) {
+        if let Some(overlay) = self.overlay.take() {
+            self.on_overlay_key(overlay, key);
+            return;
+        }
+        let Some(action) = action_of(key) else { return };
+        // Paired bindings share a help line; the second of each pair is told apart here.
+        self.perform(action);
+    }
+
+    /// Does what `action` asks.
+    pub fn perform(&mut self, action: Action) {
+        self.message = None;
+        match action {
+            Action::Quit => {
+                if self.is_modified() {
+                    self.overlay = Some(Overlay::ConfirmQuit);
+                } else {
+                    self.quit = true;
+                }
+            }
+            Action::Help => self.overlay = Some(Overlay::Help),
+            Action::Pause => self.paused = !self.paused,
+            Action::Step => {
+                self.paused = true;
+                self.advance(self.sim_dt);
+            }
+            Action::Slower => self.speed_index = self.speed_index.saturating_sub(1),
+            Action::Faster => self.speed_index = (self.speed_index + 1).min(SPEEDS.len() - 1),
+            Action::Restart => self.restart(),
+            Action::Up => self.selected = self.selected.checked_sub(1).unwrap_or(PARAMS.len() - 1),
+            Action::Down => self.selected = (self.selected + 1) % PARAMS.len(),
+            Action::GroupUp | Action::GroupDown => self.jump_group(action == Action::GroupDown),
+            Action::Decrease => self.step_selected(-1.0),
+            Action::Increase => self.step_selected(1.0),
+            Action::DecreaseCoarse => self.step_selected(-10.0),
+            Action::IncreaseCoarse => self.step_selected(10.0),
+            Action::Edit => {
+                let spec = &PARAMS[self.selected];
+                let text = self.value_text(spec);
+                self.overlay = Some(Overlay::Typing { text, error: None });
+            }
+            Action::Reset => {
+                let spec = &PARAMS[self.selected];
+                let default = (spec.get)(&WalkParams::default());
+                self.set_value(spec, &default);
+            }
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::Save => match self.path.clone() {
+                Some(_) => self.save(),
+                None => self.overlay = Some(Overlay::SavePath { text: "my_walk.toml".into(), error: None }),
+            },
+            Action::SaveAs => {
+                let text = self.path.as_ref().map_or("my_walk.toml".into(), |p| p.display().to_string());
+                self.overlay = Some(Overlay::SavePath { text, error: None });
+            }
+            Action::Presets => {
+                let items =
+                    presets::PRESETS.iter().map(|(n, t)| format!("{n:<12} {}", presets::description(t))).collect();
+                self.overlay = Some(Overlay::Pick { what: PickKind::Preset, items, selected: 0 });
+            }
+            Action::Terrain => {
+                let spec = config::schema::spec("terrain.kind").expect("a key");
+                let Kind::Choice(words) = spec.kind else { return };
+                let current = self.value_text(spec);
+                let selected = words.iter().position(|w| *w == current).unwrap_or(0);
+                let items = words.iter().map(|w| (*w).to_string()).collect();
+                self.overlay = Some(Overlay::Pick { what: PickKind::Terrain, items, selected });
+            }
+            Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
+            Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
+            Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
+            Action::ToggleGrid => self.grid = !self.grid,
+            Action::NextPanel => {
+                let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
+                self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
+            }
+            Action::RerunOptimiser => self.rerun_optimiser(),
+            Action::NextMethod => {
+                let i = SearchMethod::ALL.iter().position(|m| *m == self.params.optimiser.method).unwrap_or(0);
+                let next = SearchMethod::ALL[(i + 1) % SearchMethod::ALL.len()];
+                let spec = config::schema::spec("optimiser.method").expect("a key");
+                self.set_value(spec, &Value::Word(next.name()));
+                self.rerun_optimiser();
+            }
+        }
+    }
+
+    fn jump_group(&mut self, forward: bool) {
+        let group = PARAMS[self.selected].group();
+        let starts: Vec<usize> =
+            (0..PARAMS.len()).filter(|&i| i == 0 || PARAMS[i].group() != PARAMS[i - 1].group()).collect();
+        let here = starts.iter().rposition(|&s| PARAMS[s].group() == group).unwrap_or(0);
+        let to = if forward { (here + 1) % starts.len() } else { (here + starts.len() - 1) % starts.len() };
+        self.selected = starts[to];
+    }
+
+    /// The value of `spec` as the editor shows it (derived keys: their derived value).
+    #[must_use]
+    pub fn value_text(&self, spec: &ParamSpec) -> String {
+        match (spec.get)(&self.params) {
+            Value::Real(x) => toml_number(x),
+            Value::Auto => {
+                derived_value(spec.key, &self.params, self.walker.resolved()).map_or("auto".into(), toml_number)
+            }
+            Value::Int(n) => n.to_string(),
+            Value::Word(w) => w.to_string(),
+            Value::Bool(b) => b.to_string(),
+        }
+    }
+
+    /// Fine step of a numeric key: about 1/200 of its range, rounded to 1, 2 or 5 × 10^k.
+    #[must_use]
+    pub fn fine_step(spec: &ParamSpec) -> f64 {
+        match spec.kind {
+            Kind::Real { min, max, .. } => {
+                let raw = (max - min) / 200.0;
+                let decade = 10f64.powf(raw.log10().floor());
+                let m = raw / decade;
+                decade
+                    * if m < 1.5 {
+                        1.0
+                    } else if m < 3.5 {
+                        2.0
+                    } else if m < 7.5 {
+                        5.0
+                    } else {
+                        10.0
+                    }
+            }
+            _ => 1.0,
+        }
+    }
+
+    fn step_selected(&mut self, steps: f64) {
+        let spec = &PARAMS[self.selected];
+        let current = (spec.get)(&self.params);
+        let new = match (spec.kind, current) {
+            (Kind::Real { min, max, .. }, v) => {
+                let now = match v {
+                    Value::Real(x) => x,
+                    _ => derived_value(spec.key, &self.params, self.walker.resolved()).unwrap_or(min),
+                };
+                let step = App::fine_step(spec);
+                // Land on the step grid, so that repeated presses give round numbers.
+                let x = ((now / step).round() + steps.signum() * steps.abs().max(1.0)) * step;
+                let x = ((x.clamp(min, max)) * 1e9).round() / 1e9;
+                Value::Real(x)
+            }
+            (Kind::Int { min, max }, Value::Int(n)) => Value::Int((n + steps as i64).clamp(min, max)),
+            (Kind::Choice(words), Value::Word(w)) => {
+                let i = words.iter().position(|x| *x == w).unwrap_or(0) as i64;
+                let n = words.len() as i64;
+                Value::Word(words[(i + steps.signum() as i64).rem_euclid(n) as usize])
+            }
+            (Kind::Bool, Value::Bool(b)) => Value::Bool(!b),
+            _ => return,
+        };
+        self.set_value(spec, &new);
+    }
+
+    /// Sets a key to a value already valid for its kind, through the config's cross-checks.
+    fn set_value(&mut self, spec: &ParamSpec, value: &Value) {
+        if (spec.get)(&self.params) == *value {
+            return;
+        }
+        let mut params = self.params.clone();
+        (spec.set)(&mut params, value);
+        let problems = config::cross_check(&params);
+        if let Some((_, message)) = problems.first() {
+            self.message = Some(format!("{}: {message}", spec.key));
+            return;
+        }
+        let what = format!("{} = {}", spec.key, crate::config::render::value_text(value).unwrap_or("(derived)".into()));
+        self.apply(params, what, true);
+    }
+
+    /// Sets the selected key from typed text, validated like the config file and `--set`.
+    /// Returns the error to show, if refused.
+    pub fn set_typed(&mut self, text: &str) -> Result<(), String> {
+        let spec = &PARAMS[self.selected];
+        let text = text.trim();
+        if text.is_empty() || text == "auto" {
+            if matches!(spec.kind, Kind::Real { auto: true, .. }) {
+                self.set_value(spec, &Value::Auto);
+                return Ok(());
+            }
+            return Err(format!("{}: expected {}", spec.key, spec.valid_range()));
+        }
+        let mut loader = Loader::from_params(self.params.clone());
+        loader.apply_set(&format!("{}={text}", spec.key), 1);
+        match loader.finish() {
+            Ok(params) => {
+                if params != self.params {
+                    self.apply(params, format!("{} = {text}", spec.key), true);
+                }
+                Ok(())
+            }
+            Err(errors) => {
+                Err(errors.0.iter().map(|e| format!("{}: {}", e.key, e.message)).collect::<Vec<_>>().join("; "))
+            }
+        }
+    }
+
+    /// Puts `params` in force: live on the walk where the model allows, else a restart.
+    fn apply(&mut self, params: WalkParams, what: String, record: bool) {
+        let before = std::mem::replace(&mut self.params, params.clone());
+        match self.walker.set_params(&params) {
+            Ok(true) => {}
+            Ok(false) => self.restart(),
+            Err(e) => {
+                self.params = before;
+                self.message = Some(format!("refused: {e}"));
+                return;
+            }
+        }
+        if record {
+            self.undo.push(Edit { before, after: params, what: what.clone() });
+            self.redo.clear();
+        }
+        self.message = Some(what);
+    }
+
+    fn undo(&mut self) {
+        match self.undo.pop() {
+            Some(edit) => {
+                self.apply(edit.before.clone(), format!("undone: {}", edit.what), false);
+                self.redo.push(edit);
+            }
+            None => self.message = Some("nothing to undo".into()),
+        }
+    }
+
+    fn redo(&mut self) {
+        match self.redo.pop() {
+            Some(edit) => {
+                self.apply(edit.after.clone(), format!("redone: {}", edit.what), false);
+                self.undo.push(edit);
+            }
+            None => self.message = Some("nothing to redo".into()),
+        }
+    }
+
+    /// Writes the edits into the config file (atomically, comments kept).
+    pub fn save(&mut self) {
+        let Some(path) = self.path.clone() else { return };
+        let keys = self.changed_keys();
+        match save::save(&path, &self.source_text, &self.params, &keys) {
+            Ok(text) => {
+                self.source_text = text;
+                self.saved = self.params.clone();
+                self.message = Some(format!(
+                    "saved {} ({} key{})",
+                    path.display(),
+                    keys.len(),
+                    if keys.len() == 1 { "" } else { "s" }
+                ));
+            }
+            Err(e) => self.message = Some(format!("not saved: {e}")),
+        }
+    }
+
+    fn rerun_optimiser(&mut self) {
+        let Some(problem) = self.walker.last_step_problem() else {
+            self.message = Some("no step planned yet".into());
+            return;
+        };
+        let mut problem = problem.clone();
+        problem.settings = self.params.optimiser.clone();
+        let started = std::time::Instant::now();
+        let problem = problem.with_allowance(&self.walker);
+        let candidates = problem.search(&self.walker);
+        let elapsed_us = started.elapsed().as_secs_f64() * 1e6;
+        let best = candidates
+            .iter()
+            .filter(|c| c.cost.is_some())
+            .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
+            .copied();
+        let last = self.walker.step_plans().last().map(|p| p.optimisation.clone());
+        let Some(last) = last else { return };
+        let fixed = Candidate { x: problem.fixed_rule_x(), y: problem.ds.y, cost: problem.fixed_rule_cost };
+        self.rerun = Some(StepRecord {
+            method: Some(problem.settings.method),
+            evaluations: candidates.len() as u32,
+            feasible: candidates.iter().filter(|c| c.cost.is_some()).count() as u32,
+            fallback: best.is_none(),
+            chosen: best.unwrap_or(fixed),
+            fixed_rule: fixed,
+            candidates,
+            elapsed_us,
+            ..last
+        });
+        self.message = Some(format!(
+            "optimiser re-run on step {} with {}",
+            self.rerun.as_ref().map_or(0, |r| r.step),
+            problem.settings.method.name()
+        ));
+    }
+
+    fn on_overlay_key(&mut self, overlay: Overlay, key: KeyEvent) {
+        match overlay {
+            Overlay::Help => {
+                // Any key closes the help; `q` also quits, as users expect.
+                if key.code == KeyCode::Char('q') {
+                    self.perform(Action::Quit);
+                }
+            }
+            Overlay::ConfirmQuit => match key.code {
+                KeyCode::Char('y' | 'q') => self.quit = true,
+                KeyCode::Char('s') => {
+                    if self.path.is_some() {
+                        self.save();
+                        self.quit = !self.is_modified();
+                    } else {
+                        self.overlay = Some(Overlay::SavePath { text: "my_walk.toml".into(), error: None });
+                    }
+                }
+                _ => {}
+            },
+            Overlay::Typing { mut text, error } => match key.code {
+                KeyCode::Esc => {}
+                KeyCode::Enter => match self.set_typed(&text) {
+                    Ok(()) => {}
+                    Err(e) => self.overlay = Some(Overlay::Typing { text, error: Some(e) }),
+                },
+                KeyCode::Backspace => {
+                    text.pop();
+                    self.overlay = Some(Overlay::Typing { text, error });
+                }
+                KeyCode::Char(c) => {
+                    text.push(c);
+                    self.overlay = Some(Overlay::Typing { text, error });
+                }
+                _ => self.overlay = Some(Overlay::Typing { text, error }),
+            },
+            Overlay::SavePath { mut text, error } => match key.code {
+                KeyCode::Esc => {}
+                KeyCode::Enter => {
+                    let path = PathBuf::from(text.trim());
+                    if text.trim().is_empty() {
+                        self.overlay = Some(Overlay::SavePath { text, error: Some("type a file name".into()) });
+                        return;
+                    }
+                    let old = self.path.replace(path.clone());
+                    // A new file gets every key that differs from the text it is built from.
+                    self.saved = config::load_text(&self.source_text, "source", &[]).unwrap_or_default();
+                    self.save();
+                    if self.is_modified() {
+                        let e = self.message.clone().unwrap_or_default();
+                        self.path = old;
+                        self.overlay = Some(Overlay::SavePath { text, error: Some(e) });
+                    }
+                }
+                KeyCode::Backspace => {
+                    text.pop();
+                    self.overlay = Some(Overlay::SavePath { text, error });
+                }
+                KeyCode::Char(c) => {
+                    text.push(c);
+                    self.overlay = Some(Overlay::SavePath { text, error });
+                }
+                _ => self.overlay = Some(Overlay::SavePath { text, error }),
+            },
+            Overlay::Pick { what, items, mut selected } => match key.code {
+                KeyCode::Esc => {}
+                KeyCode::Up | KeyCode::Char('k') => {
+                    selected = selected.checked_sub(1).unwrap_or(items.len() - 1);
+                    self.overlay = Some(Overlay::Pick { what, items, selected });
+                }
+                KeyCode::Down | KeyCode::Char('j') => {
+                    selected = (selected + 1) % items.len();
+                    self.overlay = Some(Overlay::Pick { what, items, selected });
+                }
+                KeyCode::Enter => self.pick(what, &items[selected]),
+                _ => self.overlay = Some(Overlay::Pick { what, items, selected }),
+            },
+        }
+    }
+
+    fn pick(&mut self, what: PickKind, item: &str) {
+        let name = item.split_whitespace().next().unwrap_or_default();
+        match what {
+            PickKind::Preset => match presets::params(name) {
+                Some(Ok(params)) => self.apply(params, format!("preset {name}"), true),
+                Some(Err(e)) => self.message = Some(e.to_string()),
+                None => {}
+            },
+            PickKind::Terrain => {
+                let spec = config::schema::spec("terrain.kind").expect("a key");
+                if let Kind::Choice(words) = spec.kind
+                    && let Some(w) = words.iter().find(|w| **w == name)
+                {
+                    self.set_value(spec, &Value::Word(w));
+                }
+            }
+        }
+    }
+}

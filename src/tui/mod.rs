@@ -1,0 +1,189 @@
+//! The terminal lab: the event loop, the terminal's set-up and its restoration.
+//!
+//! Over SSH every byte counts, so the loop draws only when something changed — a key, a
+//! resize, or a walk frame at the capped rate (`--fps`) — writes through a buffer, and wraps
+//! each frame in a synchronized update so the terminal shows it whole. Paused with no input,
+//! it draws nothing and sleeps in `poll`.
+
+pub mod app;
+pub mod keys;
+pub mod save;
+pub mod ui;
+
+use crate::config::{self, presets};
+use app::App;
+use ratatui::Terminal;
+use ratatui::backend::{Backend, CrosstermBackend};
+use ratatui::crossterm::event::{self, Event, KeyEventKind};
+use ratatui::crossterm::terminal::{
+    BeginSynchronizedUpdate, Clear, ClearType, EndSynchronizedUpdate, EnterAlternateScreen, LeaveAlternateScreen,
+    disable_raw_mode, enable_raw_mode,
+};
+use ratatui::crossterm::{cursor, execute};
+use ratatui::symbols::Marker;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+/// How the lab is started.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Config file (`None`: the embedded default).
+    pub config: Option<PathBuf>,
+    /// `--set` overrides.
+    pub sets: Vec<String>,
+    /// Redraw cap while walking (frames/s).
+    pub fps: f64,
+    /// Canvas and chart marker.
+    pub marker: Marker,
+}
+
+/// The `--marker` names.
+pub const MARKERS: &[(&str, Marker)] =
+    &[("braille", Marker::Braille), ("halfblock", Marker::HalfBlock), ("block", Marker::Block)];
+
+/// Builds the lab's state from the options (no terminal needed): the config read, `--set`
+/// applied, the walk started.
+pub fn load_app(config: Option<&Path>, sets: &[String]) -> Result<App, String> {
+    match config {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+            let params = config::load(path, sets).map_err(|e| e.to_string())?;
+            App::new(params, text, Some(path.to_path_buf()))
+        }
+        None => {
+            let params =
+                config::load_text(presets::default_text(), "(embedded default)", sets).map_err(|e| e.to_string())?;
+            App::new(params, presets::default_text().to_string(), None)
+        }
+    }
+}
+
+/// Puts the terminal back: raw mode off, main screen, cursor shown. Safe to call twice.
+fn restore_terminal() {
+    let mut out = io::stdout();
+    let _ = execute!(out, EndSynchronizedUpdate, LeaveAlternateScreen, cursor::Show);
+    let _ = disable_raw_mode();
+}
+
+/// Restores the terminal when dropped, whichever way the loop ends.
+struct TerminalGuard;
+
+impl Drop for TerminalGuard {
+    fn drop(&mut self) {
+        restore_terminal();
+    }
+}
+
+/// Runs the lab until the user quits or a signal asks it to stop. Returns the exit code.
+pub fn run(options: &Options) -> i32 {
+    if !(1.0..=240.0).contains(&options.fps) {
+        eprintln!("gaitlab: --fps {} is out of range; valid: 1 to 240 frames/s", options.fps);
+        return 2;
+    }
+    let mut app = match load_app(options.config.as_deref(), &options.sets) {
+        Ok(app) => app,
+        Err(e) => {
+            eprintln!("{e}");
+            return 2;
+        }
+    };
+    app.show_timings = true;
+    // SIGTERM, SIGHUP (the SSH link dropped) and SIGINT end the loop like `q` without asking.
+    let stop = Arc::new(AtomicBool::new(false));
+    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP, signal_hook::consts::SIGINT] {
+        if let Err(e) = signal_hook::flag::register(signal, Arc::clone(&stop)) {
+            eprintln!("gaitlab: cannot watch signal {signal}: {e}");
+            return 1;
+        }
+    }
+    let previous_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        restore_terminal();
+        previous_hook(info);
+    }));
+    if let Err(e) = enable_raw_mode().and_then(|()| execute!(io::stdout(), EnterAlternateScreen, cursor::Hide)) {
+        restore_terminal();
+        eprintln!("gaitlab: cannot set up the terminal: {e}");
+        return 1;
+    }
+    let guard = TerminalGuard;
+    let result = event_loop(&mut app, options, &stop);
+    drop(guard);
+    match result {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("gaitlab: {e}");
+            1
+        }
+    }
+}
+
+fn draw<B: Backend + Write>(terminal: &mut Terminal<B>, app: &App, marker: Marker) -> io::Result<()>
+where
+    B::Error: Into<io::Error>,
+{
+    execute!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
+    terminal.draw(|f| ui::draw(f, app, marker)).map_err(Into::into)?;
+    execute!(terminal.backend_mut(), EndSynchronizedUpdate)?;
+    Write::flush(terminal.backend_mut())
+}
+
+fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result<()> {
+    let backend = CrosstermBackend::new(BufWriter::with_capacity(1 << 16, io::stdout()));
+    let mut terminal = Terminal::new(backend)?;
+    // Not `terminal.clear()`: it asks the terminal for the cursor position first, and a
+    // terminal that never answers (some web and serial consoles) would stop the lab there.
+    execute!(terminal.backend_mut(), Clear(ClearType::All))?;
+    let frame_interval = Duration::from_secs_f64(1.0 / options.fps);
+    let mut last_tick = Instant::now();
+    let mut dirty = true;
+    let mut drawn_this_second = 0u32;
+    let mut second_started = Instant::now();
+    while !app.quit && !stop.load(Ordering::Relaxed) {
+        if dirty {
+            draw(&mut terminal, app, options.marker)?;
+            dirty = false;
+            drawn_this_second += 1;
+        }
+        let walking = !app.paused;
+        // Idle: wake once a second only to notice a signal; nothing is drawn.
+        let timeout = if walking { frame_interval.saturating_sub(last_tick.elapsed()) } else { Duration::from_secs(1) };
+        if event::poll(timeout)? {
+            // Coalesce: handle everything queued before drawing once.
+            loop {
+                match event::read()? {
+                    Event::Key(key) if key.kind != KeyEventKind::Release => {
+                        app.on_key(key);
+                        dirty = true;
+                    }
+                    Event::Resize(..) => {
+                        terminal.autoresize()?;
+                        dirty = true;
+                    }
+                    _ => {}
+                }
+                if !event::poll(Duration::ZERO)? {
+                    break;
+                }
+            }
+        }
+        let now = Instant::now();
+        if app.paused {
+            last_tick = now;
+        } else if now.duration_since(last_tick) >= frame_interval {
+            // A long stall (suspended, slow link) is not replayed at once: at most 0.25 s.
+            let elapsed = now.duration_since(last_tick).as_secs_f64().min(0.25);
+            last_tick = now;
+            dirty |= app.tick(elapsed);
+        }
+        if second_started.elapsed() >= Duration::from_secs(1) {
+            app.measured_fps = Some(f64::from(drawn_this_second) / second_started.elapsed().as_secs_f64());
+            drawn_this_second = 0;
+            second_started = Instant::now();
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,226 @@
+//! Curve charts (with control points and a cursor at the current phase) and joint traces.
+
+use crate::model::body::Side;
+use crate::model::curve::Curve;
+use crate::model::gait_curves::CurveName;
+use crate::model::walk::leg::LegPhase;
+use crate::tui::app::{App, CurveView};
+use crate::tui::ui::walk::{LEFT, RIGHT};
+use ratatui::prelude::*;
+use ratatui::symbols::Marker;
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
+
+/// One line of a chart: legend name, colour, points.
+pub type ChartLine = (String, Color, Vec<(f64, f64)>);
+
+/// One chart's data, in display units.
+pub struct CurveData {
+    /// Title with unit.
+    pub title: &'static str,
+    /// What the x axis is.
+    pub x_label: &'static str,
+    /// (name, colour, samples) of each line; the first is the curve in force.
+    pub lines: Vec<ChartLine>,
+    /// Bézier control points of the curve in force.
+    pub control: Vec<(f64, f64)>,
+    /// Where the walk is on the x axis, if it is on this curve now.
+    pub cursor: Option<f64>,
+}
+
+fn sample(curve: &Curve, scale: f64, offset: f64) -> Vec<(f64, f64)> {
+    let (a, b) = (curve.x_start(), curve.x_end());
+    (0..=80).map(|i| a + (b - a) * f64::from(i) / 80.0).map(|x| (x, curve.eval(x) * scale + offset)).collect()
+}
+
+fn controls(curve: &Curve, scale: f64) -> Vec<(f64, f64)> {
+    curve.points().iter().map(|p| (p.x, p.y * scale)).collect()
+}
+
+/// The data of `view` as the walk has it now.
+#[must_use]
+pub fn curve_data(app: &App, view: CurveView) -> CurveData {
+    let w = &app.walker;
+    let design = w.design_curves();
+    let right_phase = app.frame.legs[0].phase;
+    let deg = 180.0 / std::f64::consts::PI;
+    let live = |name: CurveName, scale: f64, x_label| {
+        let c = w.live_curve(name).expect("a cycle curve");
+        CurveData {
+            title: view.title(),
+            x_label,
+            lines: vec![("live".into(), Color::Cyan, sample(c, scale, 0.0))],
+            control: controls(c, scale),
+            cursor: Some(right_phase),
+        }
+    };
+    // The swinging leg, if one is swinging, and how far through its swing it is.
+    let swinging = Side::BOTH.into_iter().find(|s| w.leg(*s).phase == LegPhase::Swing);
+    let r = w.resolved();
+    let swing_s = swinging.map(|s| ((app.frame.legs[s.index()].phase - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0));
+    let with_plan = |name: CurveName, scale: f64, pick: fn(&crate::model::walk::leg::SwingPlan) -> &Curve| {
+        let d = design.get(name);
+        let mut lines = Vec::new();
+        let mut control = controls(d, scale);
+        if let Some(plan) = swinging.and_then(|s| w.leg(s).swing.as_ref()) {
+            let c = pick(plan);
+            lines.push(("this step".into(), Color::Cyan, sample(c, scale, 0.0)));
+            control = controls(c, scale);
+        }
+        lines.push(("design".into(), Color::DarkGray, sample(d, scale, 0.0)));
+        CurveData { title: view.title(), x_label: "swing (0-1)", lines, control, cursor: swing_s }
+    };
+    match view {
+        CurveView::PelvisRotation => live(CurveName::PelvisRotation, deg, "right cycle (0-1)"),
+        CurveView::PelvisObliquity => live(CurveName::PelvisObliquity, deg, "right cycle (0-1)"),
+        CurveView::PelvisTilt => live(CurveName::PelvisTilt, deg, "right cycle (0-1)"),
+        CurveView::PelvisLateral => live(CurveName::PelvisLateral, 100.0, "right cycle (0-1)"),
+        CurveView::PelvisVertical | CurveView::PelvisForward => {
+            let names: &[CurveName] = if view == CurveView::PelvisVertical {
+                &[CurveName::PelvisVertical]
+            } else {
+                &[CurveName::PelvisForwardDsMs, CurveName::PelvisForwardMsDs]
+            };
+            let colors = [Color::Cyan, Color::Magenta];
+            let lines = names
+                .iter()
+                .zip(colors)
+                .map(|(n, c)| (n.key().to_string(), c, sample(design.get(*n), 1.0, 0.0)))
+                .collect();
+            CurveData {
+                title: view.title(),
+                x_label: "between keys (0-1)",
+                lines,
+                control: controls(design.get(names[0]), 1.0),
+                cursor: None,
+            }
+        }
+        CurveView::SwingForward => with_plan(CurveName::SwingForward, 1.0, |p| &p.forward),
+        CurveView::SwingLateral => with_plan(CurveName::SwingLateral, 1.0, |p| &p.lateral),
+        CurveView::SwingHeelHeight => with_plan(CurveName::SwingHeelHeight, 100.0, |p| &p.heel_height),
+        CurveView::Ankle => with_plan(CurveName::SwingAnkle, 1.0, |p| &p.ankle_deg),
+        CurveView::HeelRise => {
+            let d = design.get(CurveName::HeelRise);
+            let rising = Side::BOTH.into_iter().find(|s| w.leg(*s).phase == LegPhase::HeelRise);
+            let mut lines = Vec::new();
+            let cursor = rising.map(|s| {
+                let scale = w.leg(s).heel_rise_scale;
+                lines.push(("this step".into(), Color::Cyan, sample(d, scale, 0.0)));
+                ((app.frame.legs[s.index()].phase - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0)
+            });
+            lines.push(("design".into(), Color::DarkGray, sample(d, 1.0, 0.0)));
+            CurveData { title: view.title(), x_label: "heel rise (0-1)", lines, control: controls(d, 1.0), cursor }
+        }
+    }
+}
+
+fn bounds(points: impl Iterator<Item = f64>) -> [f64; 2] {
+    let (lo, hi) = points.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    if !lo.is_finite() {
+        return [0.0, 1.0];
+    }
+    let pad = ((hi - lo) * 0.08).max(1e-3);
+    [lo - pad, hi + pad]
+}
+
+fn label(x: f64) -> Span<'static> {
+    Span::raw(if x.abs() >= 10.0 { format!("{x:.0}") } else { format!("{x:.2}") })
+}
+
+/// Draws one curve chart.
+pub fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, marker: Marker) {
+    let data = curve_data(app, view);
+    let y =
+        bounds(data.lines.iter().flat_map(|(_, _, p)| p.iter().map(|q| q.1)).chain(data.control.iter().map(|q| q.1)));
+    let x = data
+        .lines
+        .iter()
+        .flat_map(|(_, _, p)| p.iter().map(|q| q.0))
+        .fold([f64::INFINITY, f64::NEG_INFINITY], |b, v| [b[0].min(v), b[1].max(v)]);
+    let x = if x[0] < x[1] { x } else { [0.0, 1.0] };
+    let cursor: Vec<(f64, f64)> = data
+        .cursor
+        .map_or_else(Vec::new, |c| (0..=20).map(|i| (c, y[0] + (y[1] - y[0]) * f64::from(i) / 20.0)).collect());
+    let mut datasets: Vec<Dataset> = data
+        .lines
+        .iter()
+        .map(|(name, color, pts)| {
+            Dataset::default()
+                .name(name.clone())
+                .marker(marker)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(*color))
+                .data(pts)
+        })
+        .collect();
+    datasets.push(
+        Dataset::default()
+            .name("control pts")
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Yellow))
+            .data(&data.control),
+    );
+    if !cursor.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .marker(marker)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::Red))
+                .data(&cursor),
+        );
+    }
+    let chart = Chart::new(datasets)
+        .block(Block::bordered().title(format!(" {} ", data.title)))
+        .x_axis(Axis::default().title(data.x_label).bounds(x).labels([label(x[0]), label(x[1])]))
+        .y_axis(Axis::default().bounds(y).labels([label(y[0]), label(y[1])]))
+        .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
+        .hidden_legend_constraints((Constraint::Percentage(60), Constraint::Percentage(60)));
+    f.render_widget(chart, area);
+}
+
+/// The curve panel: one chart, or a grid of four starting at the selected one.
+pub fn draw_curves(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
+    let n = CurveView::ALL.len();
+    if app.grid && area.width >= 60 && area.height >= 16 {
+        let rows = Layout::vertical([Constraint::Fill(1); 2]).split(area);
+        for (r, row) in rows.iter().enumerate() {
+            let cols = Layout::horizontal([Constraint::Fill(1); 2]).split(*row);
+            for (c, cell) in cols.iter().enumerate() {
+                draw_curve(f, *cell, app, CurveView::ALL[(app.curve + 2 * r + c) % n], marker);
+            }
+        }
+    } else {
+        draw_curve(f, area, app, CurveView::ALL[app.curve % n], marker);
+    }
+}
+
+/// Hip, knee and ankle angles of both legs over the last cycles.
+pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
+    let block = Block::bordered().title(" Joint angles (deg) over time (s) ").title_bottom(Line::from(vec![
+        Span::raw(" "),
+        Span::styled("right", Style::new().fg(RIGHT)),
+        Span::raw(" "),
+        Span::styled("left ", Style::new().fg(LEFT)),
+    ]));
+    let inner = block.inner(area);
+    f.render_widget(block, area);
+    if app.traces.len() < 2 || inner.height < 3 {
+        f.render_widget(Paragraph::new("collecting…"), inner);
+        return;
+    }
+    let t0 = app.traces.front().map_or(0.0, |t| t.0);
+    let t1 = app.traces.back().map_or(1.0, |t| t.0).max(t0 + 1e-3);
+    let rows = Layout::vertical([Constraint::Fill(1); 3]).split(inner);
+    for (j, name) in ["hip flexion", "knee flexion", "ankle dorsiflexion"].iter().enumerate() {
+        let right: Vec<(f64, f64)> = app.traces.iter().map(|(t, a)| (*t, a[j])).collect();
+        let left: Vec<(f64, f64)> = app.traces.iter().map(|(t, a)| (*t, a[j + 3])).collect();
+        let y = bounds(right.iter().chain(left.iter()).map(|p| p.1));
+        let chart = Chart::new(vec![
+            Dataset::default().marker(marker).graph_type(GraphType::Line).style(Style::new().fg(RIGHT)).data(&right),
+            Dataset::default().marker(marker).graph_type(GraphType::Line).style(Style::new().fg(LEFT)).data(&left),
+        ])
+        .x_axis(Axis::default().bounds([t0, t1]))
+        .y_axis(Axis::default().title(*name).bounds(y).labels([label(y[0]), label(y[1])]));
+        f.render_widget(chart, rows[j]);
+    }
+}

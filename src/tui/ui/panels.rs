@@ -1,0 +1,275 @@
+//! The parameter editor, the optimiser panel, the status bar and the overlays.
+
+use crate::config::schema::{Kind, PARAMS};
+use crate::tui::app::{App, Overlay, PickKind};
+use crate::tui::keys::BINDINGS;
+use ratatui::prelude::*;
+use ratatui::symbols::Marker;
+use ratatui::widgets::{
+    Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Row, Table, Wrap,
+};
+
+/// The editor: every key by group, value, unit, a `*` on changed ones; the selected key's
+/// range and doc under the list.
+pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
+    let block = Block::bordered().title(" Parameters (enter: type, x: default) ").title_bottom(Line::from(vec![
+        Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
+        Span::raw("unsaved "),
+        Span::styled("grey", Style::new().fg(Color::DarkGray)),
+        Span::raw(" derived "),
+    ]));
+    let inner = block.inner(area);
+    f.render_widget(block, area);
+    let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
+    let changed = app.changed_keys();
+    let mut items = Vec::with_capacity(PARAMS.len() + 10);
+    let mut selected_row = 0;
+    let mut group = "";
+    for (i, spec) in PARAMS.iter().enumerate() {
+        if spec.group() != group {
+            group = spec.group();
+            items.push(ListItem::new(Line::styled(format!("[{group}]"), Style::new().fg(Color::Yellow).bold())));
+        }
+        if i == app.selected {
+            selected_row = items.len();
+        }
+        let mark = if changed.contains(&spec.key) { "*" } else { " " };
+        let derived = matches!((spec.get)(&app.params), crate::config::schema::Value::Auto);
+        let value = app.value_text(spec);
+        let line = Line::from(vec![
+            Span::styled(mark, Style::new().fg(Color::LightRed).bold()),
+            Span::raw(format!("{:<21}", spec.name())),
+            Span::styled(value, if derived { Style::new().fg(Color::DarkGray) } else { Style::new().fg(Color::Cyan) }),
+            Span::raw(if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) }),
+        ]);
+        items.push(ListItem::new(line));
+    }
+    let list = List::new(items).highlight_style(Style::new().reversed());
+    let mut state = ListState::default().with_selected(Some(selected_row));
+    f.render_stateful_widget(list, list_area, &mut state);
+    let spec = &PARAMS[app.selected];
+    let step = match spec.kind {
+        Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
+        _ => String::new(),
+    };
+    let doc = Paragraph::new(vec![
+        Line::styled(format!("{}: {}{step}", spec.key, spec.valid_range()), Style::new().fg(Color::Yellow)),
+        Line::raw(spec.doc),
+    ])
+    .wrap(Wrap { trim: true });
+    f.render_widget(doc, doc_area);
+}
+
+/// The optimiser: recent choices as a table, and the last step's cost landscape.
+pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
+    let o = &app.params.optimiser;
+    let method = if o.enabled { o.method.name() } else { "off" };
+    let block = Block::bordered().title(format!(" Optimiser: {method} (o: re-run, m: method) "));
+    let inner = block.inner(area);
+    f.render_widget(block, area);
+    let plans = app.walker.step_plans();
+    let [table_area, chart_area] =
+        Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(inner);
+    let rows_fit = usize::from(table_area.height.saturating_sub(1));
+    let mut records: Vec<_> = plans.iter().rev().take(rows_fit).map(|p| p.optimisation.clone()).collect();
+    if let Some(rerun) = &app.rerun {
+        records.insert(0, rerun.clone());
+        records.truncate(rows_fit);
+    }
+    let cost = |c: Option<f64>| c.map_or("unreach".into(), |c| format!("{c:.0}"));
+    let rerun_step = app.rerun.as_ref().map(|r| r.step);
+    let rows: Vec<Row> = records
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
+            // The re-run sits on top, its step marked with the method it used.
+            let step = if i == 0 && rerun_step == Some(r.step) && app.rerun.is_some() {
+                format!("{}{}", r.step, r.method.map_or("", |m| &m.name()[..1]))
+            } else {
+                r.step.to_string()
+            };
+            Row::new(vec![
+                step,
+                r.side.suffix().to_string(),
+                format!("{:.3}", r.chosen_ratio()),
+                cost(r.chosen.cost),
+                cost(r.fixed_rule.cost),
+                format!("{}/{}", r.feasible, r.evaluations),
+                if app.show_timings { format!("{:.0}", r.elapsed_us) } else { "-".into() },
+            ])
+            .style(style)
+        })
+        .collect();
+    let table = Table::new(
+        rows,
+        [
+            Constraint::Length(5),
+            Constraint::Length(1),
+            Constraint::Length(5),
+            Constraint::Length(7),
+            Constraint::Length(7),
+            Constraint::Length(5),
+            Constraint::Length(5),
+        ],
+    )
+    .header(Row::new(["step", "", "ratio", "cost", "fixed", "feas", "us"]).style(Style::new().bold()));
+    f.render_widget(table, table_area);
+    let Some((step, landscape)) = &app.landscape else {
+        f.render_widget(Paragraph::new("no step planned yet"), chart_area);
+        return;
+    };
+    let (lo, hi) = (landscape.first().map_or(0.0, |c| c.x), landscape.last().map_or(1.0, |c| c.x));
+    let feasible: Vec<(f64, f64)> = landscape.iter().filter_map(|c| c.cost.map(|k| (c.x - lo, k))).collect();
+    let unreachable_x: Vec<f64> = landscape.iter().filter(|c| c.cost.is_none()).map(|c| c.x - lo).collect();
+    let chosen: Vec<(f64, f64)> = plans
+        .iter()
+        .rev()
+        .find(|p| p.step == *step)
+        .and_then(|p| p.optimisation.chosen.cost.map(|k| vec![(p.optimisation.chosen.x - lo, k)]))
+        .unwrap_or_default();
+    let (ymin, ymax) = feasible.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let y = if ymin.is_finite() { [ymin * 0.95, ymax * 1.05 + 1e-9] } else { [0.0, 1.0] };
+    let span = (hi - lo).max(1e-6);
+    let unreachable: Vec<(f64, f64)> = unreachable_x.iter().map(|x| (*x, y[0])).collect();
+    let chart = Chart::new(vec![
+        Dataset::default()
+            .name("unreachable")
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::LightRed))
+            .data(&unreachable),
+        Dataset::default()
+            .name("cost")
+            .marker(marker)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Cyan))
+            .data(&feasible),
+        Dataset::default()
+            .name("chosen")
+            .marker(Marker::Block)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Yellow))
+            .data(&chosen),
+    ])
+    .x_axis(
+        Axis::default()
+            .title(format!("step {step}: pelvis x in range (m)"))
+            .bounds([0.0, span])
+            .labels(["0".to_string(), format!("{span:.2}")]),
+    )
+    .y_axis(Axis::default().bounds(y).labels([format!("{:.0}", y[0]), format!("{:.0}", y[1])]))
+    .hidden_legend_constraints((Constraint::Percentage(50), Constraint::Percentage(50)));
+    f.render_widget(chart, chart_area);
+}
+
+/// One line: file and saved state, speed, frame rate, terrain, the last message.
+pub fn draw_status(f: &mut Frame, area: Rect, app: &App) {
+    let saved = if app.is_modified() {
+        Span::styled(
+            format!(" modified ({}) ", app.changed_keys().len()),
+            Style::new().fg(Color::Black).bg(Color::LightRed),
+        )
+    } else {
+        Span::styled(" saved ", Style::new().fg(Color::Black).bg(Color::Green))
+    };
+    let run = if app.paused { "paused".to_string() } else { format!("x{}", app.speed()) };
+    let fps = app.measured_fps.map_or(String::new(), |f| format!(" {f:.0} fps"));
+    let mut spans = vec![
+        Span::styled(format!(" {} ", app.file_label()), Style::new().bold()),
+        saved,
+        Span::raw(format!(" {run}{fps} ")),
+        Span::styled(
+            format!("{} ", app.value_text(crate::config::schema::spec("terrain.kind").expect("a key"))),
+            Style::new().fg(Color::Green),
+        ),
+    ];
+    match &app.message {
+        Some(m) => spans.push(Span::styled(m.clone(), Style::new().fg(Color::Yellow))),
+        None => spans.push(Span::styled("? help  q quit", Style::new().fg(Color::DarkGray))),
+    }
+    f.render_widget(Paragraph::new(Line::from(spans)), area);
+}
+
+fn centered(area: Rect, width: u16, height: u16) -> Rect {
+    let w = width.min(area.width);
+    let h = height.min(area.height);
+    Rect { x: area.x + (area.width - w) / 2, y: area.y + (area.height - h) / 2, width: w, height: h }
+}
+
+/// Whatever overlay is open.
+pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
+    let Some(overlay) = &app.overlay else { return };
+    match overlay {
+        Overlay::Help => {
+            let lines: Vec<Line> = BINDINGS
+                .iter()
+                .map(|(keys, _, what)| {
+                    Line::from(vec![
+                        Span::styled(format!("{keys:<24}"), Style::new().fg(Color::Yellow)),
+                        Span::raw(*what),
+                    ])
+                })
+                .collect();
+            let r = centered(area, 70, lines.len() as u16 + 2);
+            f.render_widget(Clear, r);
+            f.render_widget(Paragraph::new(lines).block(Block::bordered().title(" Keys (any key closes) ")), r);
+        }
+        Overlay::Typing { text, error } => {
+            let spec = &PARAMS[app.selected];
+            let mut lines = vec![
+                Line::raw(format!("{} = {text}_", spec.key)),
+                Line::styled(format!("valid: {}", spec.valid_range()), Style::new().fg(Color::DarkGray)),
+            ];
+            if let Some(e) = error {
+                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
+            }
+            let r = centered(area, 76, 6);
+            f.render_widget(Clear, r);
+            f.render_widget(
+                Paragraph::new(lines)
+                    .wrap(Wrap { trim: true })
+                    .block(Block::bordered().title(" Type a value (enter: set, esc: cancel) ")),
+                r,
+            );
+        }
+        Overlay::SavePath { text, error } => {
+            let mut lines = vec![Line::raw(format!("{text}_"))];
+            if let Some(e) = error {
+                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
+            }
+            let r = centered(area, 70, 5);
+            f.render_widget(Clear, r);
+            f.render_widget(
+                Paragraph::new(lines)
+                    .wrap(Wrap { trim: true })
+                    .block(Block::bordered().title(" Save as (enter: save, esc: cancel) ")),
+                r,
+            );
+        }
+        Overlay::ConfirmQuit => {
+            let r = centered(area, 52, 5);
+            f.render_widget(Clear, r);
+            f.render_widget(
+                Paragraph::new(vec![
+                    Line::raw(format!("{} edited key(s) are not saved.", app.changed_keys().len())),
+                    Line::styled("s: save and quit   y: quit anyway   esc: stay", Style::new().fg(Color::Yellow)),
+                ])
+                .block(Block::bordered().title(" Quit? ")),
+                r,
+            );
+        }
+        Overlay::Pick { what, items, selected } => {
+            let title = match what {
+                PickKind::Preset => " Preset (enter: load, esc: cancel) ",
+                PickKind::Terrain => " Terrain (enter: pick, esc: cancel) ",
+            };
+            let list =
+                List::new(items.iter().map(|i| ListItem::new(i.as_str()))).highlight_style(Style::new().reversed());
+            let r = centered(area, 72, items.len() as u16 + 2);
+            f.render_widget(Clear, r);
+            let mut state = ListState::default().with_selected(Some(*selected));
+            f.render_stateful_widget(list.block(Block::bordered().title(title)), r, &mut state);
+        }
+    }
+}

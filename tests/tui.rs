@@ -1,0 +1,279 @@
+//! The terminal lab: screens rendered into ratatui's `TestBackend` (insta snapshots of the
+//! text), key scripts driven into the app, and the real binary in a pseudo-terminal.
+
+use gaitlab::config::schema::PARAMS;
+use gaitlab::model::gait_curves::CurveName;
+use gaitlab::model::walk::leg::LegPhase;
+use gaitlab::tui::app::{App, Overlay, Panel};
+use gaitlab::tui::{load_app, ui};
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::symbols::Marker;
+use std::path::{Path, PathBuf};
+
+/// Relative, as a user types it (tests run in the package folder), so screens that show
+/// the file name are the same on every machine.
+fn config(name: &str) -> PathBuf {
+    Path::new("configs").join(format!("{name}.toml"))
+}
+
+fn screen(app: &App, width: u16, height: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
+    terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer();
+    (0..height)
+        .map(|y| (0..width).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>().trim_end().to_string())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn key(app: &mut App, code: KeyCode) {
+    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+fn keys(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// The default lab walked `frames` frames of 1/60 s.
+fn walked(app_config: Option<&Path>, frames: usize) -> App {
+    let mut app = load_app(app_config, &[]).unwrap();
+    for _ in 0..frames {
+        app.tick(1.0 / 60.0);
+    }
+    app
+}
+
+fn select(app: &mut App, key_name: &str) {
+    let target = PARAMS.iter().position(|p| p.key == key_name).unwrap();
+    while app.selected != target {
+        key(app, if app.selected < target { KeyCode::Down } else { KeyCode::Up });
+    }
+}
+
+#[test]
+fn default_screen_at_80x24() {
+    let app = walked(None, 90);
+    let text = screen(&app, 80, 24);
+    assert!(text.contains("Walk: side view") && text.contains("Parameters") && text.contains("(embedded default)"));
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn default_screen_at_160x48_shows_every_panel() {
+    let app = walked(None, 150);
+    let text = screen(&app, 160, 48);
+    for part in
+        ["Walk: side view", "Joint angles", "pelvic rotation (deg)", "Optimiser: thesis", "Parameters", "hip flexion"]
+    {
+        assert!(text.contains(part), "{part} missing:\n{text}");
+    }
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn help_overlay_lists_every_key() {
+    let mut app = walked(None, 30);
+    key(&mut app, KeyCode::Char('?'));
+    assert_eq!(app.overlay, Some(Overlay::Help));
+    let text = screen(&app, 80, 24);
+    for (keys, _, what) in gaitlab::tui::keys::BINDINGS {
+        assert!(text.contains(keys) && text.contains(what), "{keys} {what}:\n{text}");
+    }
+    insta::assert_snapshot!(text);
+    key(&mut app, KeyCode::Char('x'));
+    assert_eq!(app.overlay, None);
+}
+
+#[test]
+fn editor_shows_an_invalid_typed_value_inline_and_keeps_the_old_one() {
+    let mut app = walked(None, 30);
+    select(&mut app, "walk.speed_mps");
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    keys(&mut app, "9.5");
+    key(&mut app, KeyCode::Enter);
+    let Some(Overlay::Typing { error: Some(error), .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
+    assert!(error.contains("walk.speed_mps") && error.contains("0.4 to 2"), "{error}");
+    assert_eq!(app.params.walk.speed_mps, 1.3);
+    let text = screen(&app, 80, 24);
+    assert!(text.contains("9.5") && text.contains("0.4 to 2"));
+    insta::assert_snapshot!(text);
+    // Not a number at all.
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    keys(&mut app, "fast");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(&app.overlay, Some(Overlay::Typing { error: Some(_), .. })));
+    key(&mut app, KeyCode::Esc);
+    assert_eq!(app.overlay, None);
+    assert!(!app.is_modified());
+}
+
+#[test]
+fn stairs_walk_mid_swing_with_the_adapted_heel_curve() {
+    let mut app = load_app(Some(&config("stairs_up")), &[]).unwrap();
+    // Onto the stairs (they start at 2 m), then to the middle of a right swing.
+    while app.frame.pelvis.x < 3.0
+        || !(app.walker.leg(gaitlab::model::body::Side::Right).phase == LegPhase::Swing
+            && app.frame.legs[0].phase > 0.8)
+    {
+        app.tick(1.0 / 60.0);
+    }
+    let heel = gaitlab::tui::app::CurveView::ALL
+        .iter()
+        .position(|v| *v == gaitlab::tui::app::CurveView::SwingHeelHeight)
+        .unwrap();
+    while app.curve != heel {
+        key(&mut app, KeyCode::Char('c'));
+    }
+    key(&mut app, KeyCode::Tab);
+    assert_eq!(app.panel, Panel::Curves);
+    // The swinging foot climbs from its last footfall to its next, two treads (2 × 15 cm)
+    // on; the step's heel-height curve ends that far above the design's end.
+    let data = gaitlab::tui::ui::curves::curve_data(&app, gaitlab::tui::app::CurveView::SwingHeelHeight);
+    let (adapted, design) = (&data.lines[0].2, &data.lines[1].2);
+    assert!(
+        (adapted.last().unwrap().1 - design.last().unwrap().1 - 30.0).abs() < 1.0,
+        "{:?} {:?}",
+        adapted.last(),
+        design.last()
+    );
+    assert!(data.cursor.is_some());
+    let text = screen(&app, 100, 30);
+    assert!(text.contains("swing heel height (cm)") && text.contains("this step") && text.contains("R swing"));
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn optimiser_panel_shows_each_step_and_the_landscape() {
+    let mut app = walked(Some(&config("default")), 200);
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Tab);
+    }
+    assert_eq!(app.panel, Panel::Optimiser);
+    let (step, landscape) = app.landscape.clone().unwrap();
+    assert_eq!(landscape.len(), 41);
+    assert_eq!(step, app.walker.step_plans().last().unwrap().step);
+    let text = screen(&app, 80, 24);
+    assert!(text.contains("Optimiser: thesis") && text.contains(&format!("step {step}")));
+    insta::assert_snapshot!(text);
+    // m: next method, applied as an edit and re-run on the last step at once.
+    key(&mut app, KeyCode::Char('m'));
+    assert_eq!(app.params.optimiser.method.name(), "golden");
+    let rerun = app.rerun.clone().unwrap();
+    assert_eq!(rerun.method.unwrap().name(), "golden");
+    let thesis_cost = app.walker.step_plans().last().unwrap().optimisation.chosen.cost.unwrap();
+    assert!(rerun.chosen.cost.unwrap() <= thesis_cost);
+    assert!(screen(&app, 80, 24).contains("golden"));
+}
+
+#[test]
+fn a_key_script_changes_a_parameter_the_walk_the_curve_and_the_saved_file_and_undo_restores_it() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-tui-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("mine.toml");
+    let original = "# my own walk, keep this comment\n[walk]\nspeed_mps = 1.3 # as measured\n\n[pelvis]\n# tilt from my lab\ntilt_range_deg = 3.0\n";
+    std::fs::write(&path, original).unwrap();
+    let mut app = load_app(Some(&path), &[]).unwrap();
+    for _ in 0..60 {
+        app.tick(1.0 / 60.0);
+    }
+    select(&mut app, "pelvis.tilt_range_deg");
+    let fine = App::fine_step(gaitlab::config::schema::spec("pelvis.tilt_range_deg").unwrap());
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Right);
+    }
+    app.on_key(KeyEvent::new(KeyCode::Right, KeyModifiers::SHIFT));
+    let expected = 3.0 + 13.0 * fine;
+    assert!((app.params.pelvis.tilt_range_deg - expected).abs() < 1e-9, "{}", app.params.pelvis.tilt_range_deg);
+    assert_eq!(app.walker.params().pelvis.tilt_range_deg, app.params.pelvis.tilt_range_deg);
+    assert_eq!(app.changed_keys(), vec!["pelvis.tilt_range_deg"]);
+    assert!(screen(&app, 80, 24).contains("modified (1)"));
+    // After a cycle the live tilt curve has the new peak-to-peak range.
+    for _ in 0..80 {
+        app.tick(1.0 / 60.0);
+    }
+    let tilt = app.walker.live_curve(CurveName::PelvisTilt).unwrap();
+    let (lo, hi) = tilt.y_range(400);
+    assert!(((hi - lo).to_degrees() - expected).abs() < 0.05, "tilt range {} vs {expected}", (hi - lo).to_degrees());
+    // Save: the value changes, the comments and the other keys stay.
+    key(&mut app, KeyCode::Char('s'));
+    let saved = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(saved, original.replace("tilt_range_deg = 3.0", &format!("tilt_range_deg = {expected}")));
+    assert!(!app.is_modified());
+    assert_eq!(gaitlab::config::load(&path, &[]).unwrap().pelvis.tilt_range_deg, expected);
+    // Undo: back to 3.0 in the app and the walk; the file now differs, so it is marked.
+    key(&mut app, KeyCode::Char('u'));
+    key(&mut app, KeyCode::Char('u'));
+    key(&mut app, KeyCode::Char('u'));
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.params.pelvis.tilt_range_deg, 3.0);
+    assert_eq!(app.walker.params().pelvis.tilt_range_deg, 3.0);
+    assert!(app.is_modified());
+    app.on_key(KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL));
+    assert!((app.params.pelvis.tilt_range_deg - (3.0 + fine)).abs() < 1e-9);
+    // Quitting now asks; esc stays, y quits.
+    key(&mut app, KeyCode::Char('q'));
+    assert_eq!(app.overlay, Some(Overlay::ConfirmQuit));
+    assert!(!app.quit);
+    assert!(screen(&app, 80, 24).contains("not saved"));
+    key(&mut app, KeyCode::Esc);
+    assert!(!app.quit && app.overlay.is_none());
+    key(&mut app, KeyCode::Char('q'));
+    key(&mut app, KeyCode::Char('y'));
+    assert!(app.quit);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn quitting_without_edits_does_not_ask_and_terrain_and_presets_are_picked_from_lists() {
+    let mut app = walked(None, 10);
+    key(&mut app, KeyCode::Char('t'));
+    key(&mut app, KeyCode::Down);
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.value_text(gaitlab::config::schema::spec("terrain.kind").unwrap()), "stairs");
+    // A terrain change restarts the walk on the new ground.
+    assert_eq!(app.walker.time_s(), 0.0);
+    key(&mut app, KeyCode::Char('p'));
+    let target = gaitlab::config::presets::PRESETS.iter().position(|(n, _)| *n == "elderly").unwrap();
+    for _ in 0..target {
+        key(&mut app, KeyCode::Down);
+    }
+    key(&mut app, KeyCode::Enter);
+    let elderly = gaitlab::config::presets::params("elderly").unwrap().unwrap();
+    assert_eq!(app.params, elderly);
+    key(&mut app, KeyCode::Char('u'));
+    key(&mut app, KeyCode::Char('u'));
+    assert!(!app.is_modified());
+    key(&mut app, KeyCode::Char('q'));
+    assert!(app.quit);
+}
+
+#[test]
+fn pause_step_speed_and_restart() {
+    let mut app = walked(None, 10);
+    key(&mut app, KeyCode::Char(' '));
+    let t = app.walker.time_s();
+    assert!(!app.tick(0.5));
+    assert_eq!(app.walker.time_s(), t);
+    key(&mut app, KeyCode::Char('.'));
+    assert!((app.walker.time_s() - t - 1.0 / 60.0).abs() < 1e-12);
+    key(&mut app, KeyCode::Char(' '));
+    key(&mut app, KeyCode::Char('['));
+    key(&mut app, KeyCode::Char('['));
+    assert_eq!(app.speed(), 0.25);
+    let t = app.walker.time_s();
+    app.tick(0.4);
+    assert!((app.walker.time_s() - t - 0.1).abs() < 1e-9);
+    key(&mut app, KeyCode::Char('r'));
+    assert_eq!(app.walker.time_s(), 0.0);
+    key(&mut app, KeyCode::Char('v'));
+    assert!(screen(&app, 80, 24).contains("front view"));
+}
