@@ -80,8 +80,13 @@ fn help_overlay_lists_every_key() {
     key(&mut app, KeyCode::Char('?'));
     assert_eq!(app.overlay, Some(Overlay::Help));
     let text = screen(&app, 80, 24);
-    for (keys, _, what) in gaitlab::tui::keys::BINDINGS {
-        assert!(text.contains(keys) && text.contains(what), "{keys} {what}:\n{text}");
+    for (actions, what) in gaitlab::tui::keys::HELP {
+        let keys = app.keymap.help_keys(actions);
+        assert!(text.contains(&keys) && text.contains(what), "{keys} {what}:\n{text}");
+    }
+    // Every action is on some line of the help.
+    for action in gaitlab::tui::keys::Action::ALL {
+        assert!(gaitlab::tui::keys::HELP.iter().any(|(a, _)| a.contains(&action)), "{action:?} missing from the help");
     }
     insta::assert_snapshot!(text);
     key(&mut app, KeyCode::Char('x'));
@@ -276,4 +281,39 @@ fn pause_step_speed_and_restart() {
     assert_eq!(app.walker.time_s(), 0.0);
     key(&mut app, KeyCode::Char('v'));
     assert!(screen(&app, 80, 24).contains("front view"));
+}
+
+#[test]
+fn a_configs_keys_table_rebinds_keys_and_bad_entries_are_named() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-keys-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("keys.toml");
+    std::fs::write(&path, "[walk]\nspeed_mps = 1.2\n\n[keys]\nquit = \"Q\"\npause = [\"p\", \"ctrl+space\"]\n")
+        .unwrap();
+    // The walk's own loader takes the file as it is.
+    assert_eq!(gaitlab::config::load(&path, &[]).unwrap().walk.speed_mps, 1.2);
+    let mut app = load_app(Some(&path), &[]).unwrap();
+    key(&mut app, KeyCode::Char('q'));
+    assert!(!app.quit, "q is no longer quit");
+    key(&mut app, KeyCode::Char('p'));
+    assert!(app.paused && app.overlay.is_none(), "p pauses now, not presets");
+    app.on_key(KeyEvent::new(KeyCode::Char(' '), KeyModifiers::CONTROL));
+    assert!(!app.paused);
+    assert_eq!(app.keymap.keys_of(gaitlab::tui::keys::Action::Presets), "(unbound)");
+    key(&mut app, KeyCode::Char('Q'));
+    assert!(app.quit);
+
+    std::fs::write(&path, "[walk]\nspeed_mps = 1.2\n\n[keys]\npuase = \"p\"\n").unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap();
+    assert!(
+        err.contains("keys.toml:5:") && err.contains("keys.puase") && err.contains("did you mean `pause`"),
+        "{err}"
+    );
+    std::fs::write(&path, "[keys]\nquit = \"ctrl+\"\n").unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap();
+    assert!(err.contains("keys.toml:2:") && err.contains("not a key; valid:"), "{err}");
+    std::fs::write(&path, "[keys]\nquit = 5\n").unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap();
+    assert!(err.contains("expected a key name"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -130,3 +130,22 @@ fn a_bad_config_exits_2_before_touching_the_terminal() {
     assert!(!text.contains("\x1b[?1049h"), "{text}");
     assert!(text.contains("unknown_key.toml:"), "{text}");
 }
+
+#[test]
+fn paused_and_idle_the_lab_writes_nothing() {
+    let mut s = start(&["configs/default.toml"]);
+    s.wait_for("Parameters");
+    s.send(b" ");
+    s.wait_for("paused");
+    // Let the last frame out, then listen.
+    std::thread::sleep(Duration::from_millis(300));
+    let before = s.output.lock().unwrap().len();
+    std::thread::sleep(Duration::from_millis(1500));
+    assert_eq!(s.output.lock().unwrap().len(), before, "bytes written while paused and idle");
+    // A key still gets an answer.
+    s.send(b"v");
+    s.wait_for("front view");
+    s.send(b"q");
+    assert_eq!(s.wait_exit(), 0);
+    s.assert_restored();
+}

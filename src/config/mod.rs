@@ -125,6 +125,11 @@ impl Loader {
         for (group_key, group_value) in root.get_ref() {
             let group = group_key.get_ref().as_ref();
             let at = place(group_key.span().start);
+            // `[keys]` rebinds the terminal lab's keys; the lab reads and checks it itself
+            // (key names are a terminal matter), the walk has nothing to take from it.
+            if group == "keys" {
+                continue;
+            }
             if !GROUPS.contains(&group) {
                 let hint = did_you_mean(group, GROUPS.iter().copied())
                     .map_or(String::new(), |g| format!("; did you mean [{g}]?"));

@@ -1,7 +1,7 @@
 //! The lab's state and what keys do to it. No terminal here: the loop in `tui/mod.rs` feeds
 //! it keys and time, the widgets in `tui/ui` draw it, and tests drive it directly.
 
-use super::keys::{Action, action_of};
+use super::keys::{Action, KeyMap};
 use super::save;
 use crate::config::render::{derived_value, toml_number};
 use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
@@ -218,6 +218,8 @@ pub struct App {
     pub sim_dt: f64,
     /// Show wall-clock figures (search times); off in tests, whose screens must repeat.
     pub show_timings: bool,
+    /// Key bindings (the defaults with the config's `[keys]`).
+    pub keymap: KeyMap,
 }
 
 impl App {
@@ -251,6 +253,7 @@ impl App {
             measured_fps: None,
             sim_dt: 1.0 / 60.0,
             show_timings: false,
+            keymap: KeyMap::default(),
         };
         app.record_trace();
         Ok(app)
@@ -355,8 +358,7 @@ impl App {
             self.on_overlay_key(overlay, key);
             return;
         }
-        let Some(action) = action_of(key) else { return };
-        // Paired bindings share a help line; the second of each pair is told apart here.
+        let Some(action) = self.keymap.action_of(key) else { return };
         self.perform(action);
     }
 

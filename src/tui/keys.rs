@@ -67,71 +67,310 @@ pub enum Action {
     NextMethod,
 }
 
-/// The default bindings, in the order the help lists them: (keys as shown, action, what).
-pub const BINDINGS: &[(&str, Action, &str)] = &[
-    ("?", Action::Help, "show or hide this help"),
-    ("q", Action::Quit, "quit (asks when edits are unsaved)"),
-    ("space", Action::Pause, "pause / resume"),
-    (".", Action::Step, "one frame forward (pauses)"),
-    ("[ ]", Action::Slower, "slower / faster (0.125x to 4x)"),
-    ("r", Action::Restart, "restart the walk"),
-    ("up down / k j", Action::Up, "select a parameter"),
-    ("pgup pgdn", Action::GroupUp, "previous / next group"),
-    ("left right / h l", Action::Decrease, "change it by a fine step"),
-    ("shift+left right / H L", Action::DecreaseCoarse, "change it by a coarse step"),
-    ("enter", Action::Edit, "type an exact value (esc cancels)"),
-    ("x", Action::Reset, "back to the default or derived value"),
-    ("u / ctrl+r", Action::Undo, "undo / redo"),
-    ("s / S", Action::Save, "save / save as"),
-    ("p", Action::Presets, "load a preset's parameters"),
-    ("t", Action::Terrain, "pick the terrain kind"),
-    ("v", Action::ToggleView, "side / frontal view"),
-    ("c / C", Action::NextCurve, "next / previous curve"),
-    ("g", Action::ToggleGrid, "one curve / grid of curves"),
-    ("tab", Action::NextPanel, "next panel (small screens)"),
-    ("o", Action::RerunOptimiser, "re-run the optimiser on the last step"),
-    ("m", Action::NextMethod, "next optimiser method"),
+impl Action {
+    /// Every action, in the order of its `[keys]` name table.
+    pub const ALL: [Action; 30] = [
+        Action::Quit,
+        Action::Help,
+        Action::Pause,
+        Action::Step,
+        Action::Slower,
+        Action::Faster,
+        Action::Restart,
+        Action::Up,
+        Action::Down,
+        Action::GroupUp,
+        Action::GroupDown,
+        Action::Decrease,
+        Action::Increase,
+        Action::DecreaseCoarse,
+        Action::IncreaseCoarse,
+        Action::Edit,
+        Action::Reset,
+        Action::Undo,
+        Action::Redo,
+        Action::Save,
+        Action::SaveAs,
+        Action::Presets,
+        Action::Terrain,
+        Action::ToggleView,
+        Action::NextCurve,
+        Action::PrevCurve,
+        Action::ToggleGrid,
+        Action::NextPanel,
+        Action::RerunOptimiser,
+        Action::NextMethod,
+    ];
+
+    /// Its name in a config's `[keys]` table.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Action::Quit => "quit",
+            Action::Help => "help",
+            Action::Pause => "pause",
+            Action::Step => "step",
+            Action::Slower => "slower",
+            Action::Faster => "faster",
+            Action::Restart => "restart",
+            Action::Up => "up",
+            Action::Down => "down",
+            Action::GroupUp => "group_up",
+            Action::GroupDown => "group_down",
+            Action::Decrease => "decrease",
+            Action::Increase => "increase",
+            Action::DecreaseCoarse => "decrease_coarse",
+            Action::IncreaseCoarse => "increase_coarse",
+            Action::Edit => "edit",
+            Action::Reset => "reset",
+            Action::Undo => "undo",
+            Action::Redo => "redo",
+            Action::Save => "save",
+            Action::SaveAs => "save_as",
+            Action::Presets => "presets",
+            Action::Terrain => "terrain",
+            Action::ToggleView => "toggle_view",
+            Action::NextCurve => "next_curve",
+            Action::PrevCurve => "prev_curve",
+            Action::ToggleGrid => "toggle_grid",
+            Action::NextPanel => "next_panel",
+            Action::RerunOptimiser => "rerun_optimiser",
+            Action::NextMethod => "next_method",
+        }
+    }
+}
+
+/// The default bindings: key (as written in `[keys]`), action.
+pub const DEFAULT_KEYS: &[(&str, Action)] = &[
+    ("q", Action::Quit),
+    ("ctrl+c", Action::Quit),
+    ("?", Action::Help),
+    ("space", Action::Pause),
+    (".", Action::Step),
+    ("[", Action::Slower),
+    ("]", Action::Faster),
+    ("r", Action::Restart),
+    ("up", Action::Up),
+    ("k", Action::Up),
+    ("down", Action::Down),
+    ("j", Action::Down),
+    ("pageup", Action::GroupUp),
+    ("pagedown", Action::GroupDown),
+    ("left", Action::Decrease),
+    ("h", Action::Decrease),
+    ("right", Action::Increase),
+    ("l", Action::Increase),
+    ("shift+left", Action::DecreaseCoarse),
+    ("H", Action::DecreaseCoarse),
+    ("shift+right", Action::IncreaseCoarse),
+    ("L", Action::IncreaseCoarse),
+    ("enter", Action::Edit),
+    ("x", Action::Reset),
+    ("u", Action::Undo),
+    ("ctrl+r", Action::Redo),
+    ("s", Action::Save),
+    ("S", Action::SaveAs),
+    ("p", Action::Presets),
+    ("t", Action::Terrain),
+    ("v", Action::ToggleView),
+    ("c", Action::NextCurve),
+    ("C", Action::PrevCurve),
+    ("g", Action::ToggleGrid),
+    ("tab", Action::NextPanel),
+    ("o", Action::RerunOptimiser),
+    ("m", Action::NextMethod),
 ];
 
-/// The action of a key press, with the default bindings.
-#[must_use]
-pub fn action_of(key: KeyEvent) -> Option<Action> {
-    let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-    let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-    Some(match key.code {
-        KeyCode::Char('c') if ctrl => Action::Quit,
-        KeyCode::Char('r') if ctrl => Action::Redo,
-        KeyCode::Char('q') => Action::Quit,
-        KeyCode::Char('?') => Action::Help,
-        KeyCode::Char(' ') => Action::Pause,
-        KeyCode::Char('.') => Action::Step,
-        KeyCode::Char('[') => Action::Slower,
-        KeyCode::Char(']') => Action::Faster,
-        KeyCode::Char('r') => Action::Restart,
-        KeyCode::Up | KeyCode::Char('k') => Action::Up,
-        KeyCode::Down | KeyCode::Char('j') => Action::Down,
-        KeyCode::PageUp => Action::GroupUp,
-        KeyCode::PageDown => Action::GroupDown,
-        KeyCode::Left if shift => Action::DecreaseCoarse,
-        KeyCode::Right if shift => Action::IncreaseCoarse,
-        KeyCode::Left | KeyCode::Char('h') => Action::Decrease,
-        KeyCode::Right | KeyCode::Char('l') => Action::Increase,
-        KeyCode::Char('H') => Action::DecreaseCoarse,
-        KeyCode::Char('L') => Action::IncreaseCoarse,
-        KeyCode::Enter => Action::Edit,
-        KeyCode::Char('x') => Action::Reset,
-        KeyCode::Char('u') => Action::Undo,
-        KeyCode::Char('s') => Action::Save,
-        KeyCode::Char('S') => Action::SaveAs,
-        KeyCode::Char('p') => Action::Presets,
-        KeyCode::Char('t') => Action::Terrain,
-        KeyCode::Char('v') => Action::ToggleView,
-        KeyCode::Char('c') => Action::NextCurve,
-        KeyCode::Char('C') => Action::PrevCurve,
-        KeyCode::Char('g') => Action::ToggleGrid,
-        KeyCode::Tab => Action::NextPanel,
-        KeyCode::Char('o') => Action::RerunOptimiser,
-        KeyCode::Char('m') => Action::NextMethod,
-        _ => return None,
-    })
+/// The help's lines: the actions each line covers, and what they do.
+pub const HELP: &[(&[Action], &str)] = &[
+    (&[Action::Help], "show or hide this help"),
+    (&[Action::Quit], "quit (asks when edits are unsaved)"),
+    (&[Action::Pause], "pause / resume"),
+    (&[Action::Step], "one frame forward (pauses)"),
+    (&[Action::Slower, Action::Faster], "slower / faster (0.125x to 4x)"),
+    (&[Action::Restart], "restart the walk"),
+    (&[Action::Up, Action::Down], "select a parameter"),
+    (&[Action::GroupUp, Action::GroupDown], "previous / next group"),
+    (&[Action::Decrease, Action::Increase], "change it by a fine step"),
+    (&[Action::DecreaseCoarse, Action::IncreaseCoarse], "change it by a coarse step (x10)"),
+    (&[Action::Edit], "type an exact value (esc cancels)"),
+    (&[Action::Reset], "back to the default or derived value"),
+    (&[Action::Undo, Action::Redo], "undo / redo"),
+    (&[Action::Save, Action::SaveAs], "save / save as"),
+    (&[Action::Presets], "load a preset's parameters"),
+    (&[Action::Terrain], "pick the terrain kind"),
+    (&[Action::ToggleView], "side / frontal view"),
+    (&[Action::NextCurve, Action::PrevCurve], "next / previous curve"),
+    (&[Action::ToggleGrid], "one curve / grid of curves"),
+    (&[Action::NextPanel], "next panel (small screens)"),
+    (&[Action::RerunOptimiser], "re-run the optimiser on the last step"),
+    (&[Action::NextMethod], "next optimiser method"),
+];
+
+/// A key as written in `[keys]`: `q`, `Q`, `?`, `space`, `enter`, `ctrl+r`, `shift+left`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct KeySpec {
+    /// The key.
+    pub code: KeyCode,
+    /// With control.
+    pub ctrl: bool,
+    /// With shift (for keys without a shifted character).
+    pub shift: bool,
+}
+
+impl KeySpec {
+    /// Reads a key name; the error says what names are valid.
+    pub fn parse(text: &str) -> Result<KeySpec, String> {
+        let mut ctrl = false;
+        let mut shift = false;
+        let mut rest = text;
+        loop {
+            if let Some(r) = rest.strip_prefix("ctrl+") {
+                ctrl = true;
+                rest = r;
+            } else if let Some(r) = rest.strip_prefix("shift+") {
+                shift = true;
+                rest = r;
+            } else {
+                break;
+            }
+        }
+        let code = match rest {
+            "space" => KeyCode::Char(' '),
+            "enter" => KeyCode::Enter,
+            "tab" => KeyCode::Tab,
+            "esc" => KeyCode::Esc,
+            "backspace" => KeyCode::Backspace,
+            "up" => KeyCode::Up,
+            "down" => KeyCode::Down,
+            "left" => KeyCode::Left,
+            "right" => KeyCode::Right,
+            "pageup" => KeyCode::PageUp,
+            "pagedown" => KeyCode::PageDown,
+            "home" => KeyCode::Home,
+            "end" => KeyCode::End,
+            _ => {
+                let mut chars = rest.chars();
+                match (chars.next(), chars.next()) {
+                    (Some(c), None) if !c.is_control() => KeyCode::Char(c),
+                    _ => {
+                        return Err(format!(
+                            "`{text}` is not a key; valid: one character, or space, enter, tab, esc, backspace, up, down, left, right, pageup, pagedown, home, end, each optionally after ctrl+ or shift+"
+                        ));
+                    }
+                }
+            }
+        };
+        Ok(KeySpec { code, ctrl, shift })
+    }
+
+    /// As the help shows it.
+    #[must_use]
+    pub fn label(self) -> String {
+        let name = match self.code {
+            KeyCode::Char(' ') => "space".to_string(),
+            KeyCode::Char(c) => c.to_string(),
+            KeyCode::Enter => "enter".into(),
+            KeyCode::Tab => "tab".into(),
+            KeyCode::Esc => "esc".into(),
+            KeyCode::Backspace => "backspace".into(),
+            KeyCode::Up => "up".into(),
+            KeyCode::Down => "down".into(),
+            KeyCode::Left => "left".into(),
+            KeyCode::Right => "right".into(),
+            KeyCode::PageUp => "pgup".into(),
+            KeyCode::PageDown => "pgdn".into(),
+            KeyCode::Home => "home".into(),
+            KeyCode::End => "end".into(),
+            other => format!("{other:?}"),
+        };
+        format!("{}{}{name}", if self.ctrl { "ctrl+" } else { "" }, if self.shift { "shift+" } else { "" })
+    }
+
+    fn matches(self, key: KeyEvent) -> bool {
+        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        // A character carries its shift in its case: `H` arrives as Char('H') with SHIFT.
+        let shift_ok = matches!(self.code, KeyCode::Char(_)) || shift == self.shift;
+        self.code == key.code && ctrl == self.ctrl && shift_ok
+    }
+}
+
+/// The bindings in force: the defaults with a config's `[keys]` applied.
+#[derive(Clone, Debug)]
+pub struct KeyMap {
+    bindings: Vec<(KeySpec, Action)>,
+}
+
+impl Default for KeyMap {
+    fn default() -> Self {
+        KeyMap {
+            bindings: DEFAULT_KEYS.iter().map(|(k, a)| (KeySpec::parse(k).expect("default keys parse"), *a)).collect(),
+        }
+    }
+}
+
+impl KeyMap {
+    /// The defaults with the `[keys]` table of a config's text applied: each named action
+    /// gets exactly the keys given (a string or an array of strings), and a key given to one
+    /// action is taken from any other. Errors name the file, line, key and what is valid.
+    pub fn from_config(text: &str, path: &str) -> Result<KeyMap, String> {
+        let mut map = KeyMap::default();
+        let doc: toml_edit::Document<String> =
+            text.parse().map_err(|e: toml_edit::TomlError| format!("{path}: {e}"))?;
+        let Some(table) = doc.get("keys") else { return Ok(map) };
+        let place = |span: Option<std::ops::Range<usize>>| {
+            let (line, col) = crate::config::line_col(text, span.map_or(0, |s| s.start));
+            format!("{path}:{line}:{col}")
+        };
+        let Some(table) = table.as_table_like() else {
+            return Err(format!("{}: keys: expected a table [keys]", place(table.span())));
+        };
+        for (name, item) in table.iter() {
+            let at = place(item.span().or_else(|| table.key(name).and_then(|k| k.span())));
+            let Some(action) = Action::ALL.into_iter().find(|a| a.name() == name) else {
+                let hint = crate::config::schema::did_you_mean(name, Action::ALL.iter().map(|a| a.name()))
+                    .map_or(String::new(), |n| format!("did you mean `{n}`? "));
+                let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
+                return Err(format!("{at}: keys.{name}: unknown action; {hint}actions: {}", names.join(", ")));
+            };
+            let texts: Vec<&str> = match item.as_value() {
+                Some(toml_edit::Value::String(s)) => vec![s.value().as_str()],
+                Some(toml_edit::Value::Array(a)) if a.iter().all(|v| v.as_str().is_some()) && !a.is_empty() => {
+                    a.iter().filter_map(|v| v.as_str()).collect()
+                }
+                _ => {
+                    return Err(format!(
+                        "{at}: keys.{name}: expected a key name or an array of them, like \"q\" or [\"q\", \"ctrl+c\"]"
+                    ));
+                }
+            };
+            let mut specs = Vec::new();
+            for t in texts {
+                specs.push(KeySpec::parse(t).map_err(|e| format!("{at}: keys.{name}: {e}"))?);
+            }
+            map.bindings.retain(|(k, a)| *a != action && !specs.contains(k));
+            map.bindings.extend(specs.into_iter().map(|k| (k, action)));
+        }
+        Ok(map)
+    }
+
+    /// The action of a key press.
+    #[must_use]
+    pub fn action_of(&self, key: KeyEvent) -> Option<Action> {
+        self.bindings.iter().find(|(k, _)| k.matches(key)).map(|(_, a)| *a)
+    }
+
+    /// The keys bound to `action`, as the help shows them.
+    #[must_use]
+    pub fn keys_of(&self, action: Action) -> String {
+        let keys: Vec<String> = self.bindings.iter().filter(|(_, a)| *a == action).map(|(k, _)| k.label()).collect();
+        if keys.is_empty() { "(unbound)".into() } else { keys.join(" ") }
+    }
+
+    /// The help's key column for one line.
+    #[must_use]
+    pub fn help_keys(&self, actions: &[Action]) -> String {
+        actions.iter().map(|a| self.keys_of(*a)).collect::<Vec<_>>().join(" / ")
+    }
 }

@@ -51,7 +51,10 @@ pub fn load_app(config: Option<&Path>, sets: &[String]) -> Result<App, String> {
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
             let params = config::load(path, sets).map_err(|e| e.to_string())?;
-            App::new(params, text, Some(path.to_path_buf()))
+            let keymap = keys::KeyMap::from_config(&text, &path.display().to_string())?;
+            let mut app = App::new(params, text, Some(path.to_path_buf()))?;
+            app.keymap = keymap;
+            Ok(app)
         }
         None => {
             let params =

@@ -211,9 +211,11 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let t0 = app.traces.front().map_or(0.0, |t| t.0);
     let t1 = app.traces.back().map_or(1.0, |t| t.0).max(t0 + 1e-3);
     let rows = Layout::vertical([Constraint::Fill(1); 3]).split(inner);
+    // No more points than braille dots across: the rest would only cost drawing time.
+    let stride = (app.traces.len() / (2 * usize::from(inner.width).max(1))).max(1);
     for (j, name) in ["hip flexion", "knee flexion", "ankle dorsiflexion"].iter().enumerate() {
-        let right: Vec<(f64, f64)> = app.traces.iter().map(|(t, a)| (*t, a[j])).collect();
-        let left: Vec<(f64, f64)> = app.traces.iter().map(|(t, a)| (*t, a[j + 3])).collect();
+        let right: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j])).collect();
+        let left: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j + 3])).collect();
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1));
         let chart = Chart::new(vec![
             Dataset::default().marker(marker).graph_type(GraphType::Line).style(Style::new().fg(RIGHT)).data(&right),

@@ -2,7 +2,7 @@
 
 use crate::config::schema::{Kind, PARAMS};
 use crate::tui::app::{App, Overlay, PickKind};
-use crate::tui::keys::BINDINGS;
+use crate::tui::keys::HELP;
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
 use ratatui::widgets::{
@@ -21,31 +21,44 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     let inner = block.inner(area);
     f.render_widget(block, area);
     let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
-    let changed = app.changed_keys();
-    let mut items = Vec::with_capacity(PARAMS.len() + 10);
-    let mut selected_row = 0;
-    let mut group = "";
+    // Rows are group headers (None) or keys; only the rows that fit are built, in a window
+    // that keeps the selected key in view.
+    let mut rows: Vec<Option<usize>> = Vec::with_capacity(PARAMS.len() + 10);
     for (i, spec) in PARAMS.iter().enumerate() {
-        if spec.group() != group {
-            group = spec.group();
-            items.push(ListItem::new(Line::styled(format!("[{group}]"), Style::new().fg(Color::Yellow).bold())));
+        if i == 0 || spec.group() != PARAMS[i - 1].group() {
+            rows.push(None);
         }
-        if i == app.selected {
-            selected_row = items.len();
-        }
-        let mark = if changed.contains(&spec.key) { "*" } else { " " };
-        let derived = matches!((spec.get)(&app.params), crate::config::schema::Value::Auto);
-        let value = app.value_text(spec);
-        let line = Line::from(vec![
-            Span::styled(mark, Style::new().fg(Color::LightRed).bold()),
-            Span::raw(format!("{:<21}", spec.name())),
-            Span::styled(value, if derived { Style::new().fg(Color::DarkGray) } else { Style::new().fg(Color::Cyan) }),
-            Span::raw(if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) }),
-        ]);
-        items.push(ListItem::new(line));
+        rows.push(Some(i));
     }
+    let selected_row = rows.iter().position(|r| *r == Some(app.selected)).unwrap_or(0);
+    let height = usize::from(list_area.height).max(1);
+    let first = selected_row.saturating_sub(height / 2).min(rows.len().saturating_sub(height));
+    let saved = &app.saved;
+    let items: Vec<ListItem> = rows[first..(first + height).min(rows.len())]
+        .iter()
+        .enumerate()
+        .map(|(k, row)| match row {
+            None => {
+                let group = PARAMS[rows[first + k + 1].unwrap_or(0)].group();
+                ListItem::new(Line::styled(format!("[{group}]"), Style::new().fg(Color::Yellow).bold()))
+            }
+            Some(i) => {
+                let spec = &PARAMS[*i];
+                let now = (spec.get)(&app.params);
+                let mark = if now == (spec.get)(saved) { " " } else { "*" };
+                let derived = matches!(now, crate::config::schema::Value::Auto);
+                let value_style = if derived { Style::new().fg(Color::DarkGray) } else { Style::new().fg(Color::Cyan) };
+                ListItem::new(Line::from(vec![
+                    Span::styled(mark, Style::new().fg(Color::LightRed).bold()),
+                    Span::raw(format!("{:<21}", spec.name())),
+                    Span::styled(app.value_text(spec), value_style),
+                    Span::raw(if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) }),
+                ]))
+            }
+        })
+        .collect();
     let list = List::new(items).highlight_style(Style::new().reversed());
-    let mut state = ListState::default().with_selected(Some(selected_row));
+    let mut state = ListState::default().with_selected(Some(selected_row - first));
     f.render_stateful_widget(list, list_area, &mut state);
     let spec = &PARAMS[app.selected];
     let step = match spec.kind {
@@ -71,11 +84,8 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let [table_area, chart_area] =
         Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(inner);
     let rows_fit = usize::from(table_area.height.saturating_sub(1));
-    let mut records: Vec<_> = plans.iter().rev().take(rows_fit).map(|p| p.optimisation.clone()).collect();
-    if let Some(rerun) = &app.rerun {
-        records.insert(0, rerun.clone());
-        records.truncate(rows_fit);
-    }
+    let records: Vec<&crate::model::optimise::StepRecord> =
+        app.rerun.iter().chain(plans.iter().rev().map(|p| &p.optimisation)).take(rows_fit).collect();
     let cost = |c: Option<f64>| c.map_or("unreach".into(), |c| format!("{c:.0}"));
     let rerun_step = app.rerun.as_ref().map(|r| r.step);
     let rows: Vec<Row> = records
@@ -202,16 +212,17 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
     let Some(overlay) = &app.overlay else { return };
     match overlay {
         Overlay::Help => {
-            let lines: Vec<Line> = BINDINGS
+            let lines: Vec<Line> = HELP
                 .iter()
-                .map(|(keys, _, what)| {
+                .map(|(actions, what)| {
+                    let keys = app.keymap.help_keys(actions);
                     Line::from(vec![
-                        Span::styled(format!("{keys:<24}"), Style::new().fg(Color::Yellow)),
+                        Span::styled(format!("{keys:<27} "), Style::new().fg(Color::Yellow)),
                         Span::raw(*what),
                     ])
                 })
                 .collect();
-            let r = centered(area, 70, lines.len() as u16 + 2);
+            let r = centered(area, 76, lines.len() as u16 + 2);
             f.render_widget(Clear, r);
             f.render_widget(Paragraph::new(lines).block(Block::bordered().title(" Keys (any key closes) ")), r);
         }
