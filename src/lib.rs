@@ -3,7 +3,7 @@
 //!
 //! The crate is layered: [`model`] is the walk and knows nothing of files or terminals;
 //! [`config`] reads and validates TOML into model parameters; [`output`] writes the joint
-//! table; [`analysis`] measures walks; [`tui`] is the terminal lab and [`cli`] the command
+//! table; [`analysis`] measures walks; [`report`] writes report folders; [`tui`] is the terminal lab and [`cli`] the command
 //! line, both on top of the rest.
 
 #![warn(missing_docs)]
@@ -13,4 +13,5 @@ pub mod cli;
 pub mod config;
 pub mod model;
 pub mod output;
+pub mod report;
 pub mod tui;

@@ -92,6 +92,23 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// Write a report folder: summary.md/json, config.toml, joints, footfalls and optimisation tables
+    Report {
+        /// Config file.
+        config: PathBuf,
+        /// Report folder [default: reports/<config stem>]
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Gait cycles to simulate [default: the config's sim.cycles]
+        #[arg(long)]
+        cycles: Option<u32>,
+        /// Overlay another config's walk (not built yet: refused with exit 2)
+        #[arg(long)]
+        compare: Vec<PathBuf>,
+        /// Override a key: --set walk.speed_mps=1.4 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// List the presets: name, then a short description
     Presets,
     /// Print a complete, commented config
@@ -127,6 +144,9 @@ pub fn run(cli: Cli) -> ExitCode {
             simulate(&config, cycles, fps, out.as_deref(), &sets)
         }
         Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
+        Some(Command::Report { config, out, cycles, compare, sets }) => {
+            report(&config, out.as_deref(), cycles, &compare, &sets)
+        }
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));
@@ -144,6 +164,56 @@ fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
         return 2;
     };
     crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker })
+}
+
+fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathBuf], sets: &[String]) -> ExitCode {
+    use std::io::IsTerminal;
+    if !compare.is_empty() {
+        eprintln!("gaitlab report: --compare is not built yet; write one report per config for now");
+        return 2;
+    }
+    let params = match load_config(path, sets) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let cycles = cycles.unwrap_or(params.sim.cycles);
+    if !(3..=100_000).contains(&cycles) {
+        eprintln!(
+            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 100000 (the first cycle is start-up)"
+        );
+        return 2;
+    }
+    let source_text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("{}: cannot read: {e}", path.display());
+            return 2;
+        }
+    };
+    let out = out.map_or_else(|| crate::report::default_out(path), Path::to_path_buf);
+    let input = crate::report::ReportInput {
+        name: path.file_stem().map_or("config".into(), |s| s.to_string_lossy().into_owned()),
+        source_text: &source_text,
+        params: &params,
+        cycles,
+        fps: params.sim.fps,
+    };
+    let tty = io::stderr().is_terminal();
+    let mut progress = |stage: &str| {
+        if tty {
+            eprintln!("gaitlab report: {stage}");
+        }
+    };
+    match crate::report::write_report(&input, &out, &mut progress) {
+        Ok(_) => {
+            println!("{}", out.display());
+            0
+        }
+        Err(e) => {
+            eprintln!("gaitlab report: {e}");
+            1
+        }
+    }
 }
 
 fn check(configs: &[PathBuf], sets: &[String]) -> ExitCode {

@@ -5,6 +5,7 @@
 //! table in [`schema`], so every problem in a file is reported at once, in file order, and
 //! unknown keys get a "did you mean".
 
+pub mod edit;
 pub mod presets;
 pub mod render;
 pub mod schema;

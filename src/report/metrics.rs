@@ -1,0 +1,243 @@
+//! Gait metrics of a simulated walk, computed from its frames (never from the parameters).
+//!
+//! Definitions, as `summary.json` reports them:
+//! - **steady state**: from the second right heel strike (the first cycle is start-up) to the
+//!   last right heel strike of the run; every figure except the health checks is taken over
+//!   these complete cycles.
+//! - **speed**: pelvis travel over the steady window divided by its duration.
+//! - **cycle, cadence**: mean right heel strike to right heel strike time; cadence = 120/cycle.
+//! - **stride length**: mean forward distance between consecutive right heel strikes'
+//!   footfalls (heel positions); **step width**: mean lateral distance between consecutive
+//!   footfalls of opposite feet.
+//! - **stance %**: frames in which a leg is in loading response, midstance or heel rise, over
+//!   all frames, averaged over both legs; **double support %**: frames with both feet down.
+//! - **ranges** (pelvis, shoulder, elbow): max − min within each steady cycle, averaged over
+//!   the cycles (on stairs or slopes a range over the whole walk would measure the climb);
+//!   the pelvis's vertical range is taken after removing the straight line from the cycle's
+//!   first to its last frame, so on a climb it is the bob, not the height gained.
+//! - **peaks** (hip, knee, ankle): extremes over all steady frames of both legs; knee stance
+//!   and swing peaks are split by the leg's phase. Extension and plantarflexion are reported
+//!   as positive numbers.
+//! - **clearance**: toe tip (or heel) height above the ground directly below it; the
+//!   minimum toe clearance is the lowest point of mid-swing (swing phase 0.7–0.9 of the
+//!   cycle, where the foot passes the stance foot), so the toe leaving and touching the
+//!   ground does not count; the maximum heel clearance is the highest over the whole swing.
+//!   Over uneven ground "below" follows the terrain under each point at that frame.
+//! - **foot skate, penetration, reach failures, non-finite values**: the walk model's health
+//!   checks ([`crate::analysis::checks`]) over every frame, start-up included.
+//! - **optimiser**: steps decided in the steady window, the mean chosen cost, and the steps
+//!   where no candidate was feasible; `optimiser_fixed_rule_mean_cost` gives the fixed rule's
+//!   cost on the same steps for comparison.
+
+use crate::analysis::{self, Run};
+use crate::model::body::Side;
+use crate::model::walk::frame::{Frame, Support};
+use crate::model::walk::leg::LegPhase;
+use serde::Serialize;
+
+/// The figures of `summary.json`, in the interface's order.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[allow(missing_docs)]
+pub struct Summary {
+    pub speed_mps: f64,
+    pub cadence_spm: f64,
+    pub stride_length_m: f64,
+    pub step_width_m: f64,
+    pub cycle_s: f64,
+    pub stance_pct: f64,
+    pub double_support_pct: f64,
+    pub pelvis_vertical_range_cm: f64,
+    pub pelvis_lateral_range_cm: f64,
+    pub pelvis_tilt_range_deg: f64,
+    pub pelvis_obliquity_range_deg: f64,
+    pub pelvis_rotation_range_deg: f64,
+    pub hip_flex_max_deg: f64,
+    pub hip_ext_max_deg: f64,
+    pub knee_flex_max_stance_deg: f64,
+    pub knee_flex_max_swing_deg: f64,
+    pub ankle_dorsi_max_deg: f64,
+    pub ankle_plantar_max_deg: f64,
+    pub shoulder_flex_range_deg: f64,
+    pub elbow_flex_range_deg: f64,
+    pub min_toe_clearance_cm: f64,
+    pub max_heel_clearance_cm: f64,
+    pub foot_skate_mm: f64,
+    pub terrain_penetration_mm: f64,
+    pub reach_failures: u64,
+    pub non_finite_values: u64,
+    pub optimiser_steps: u64,
+    pub optimiser_mean_cost: f64,
+    pub optimiser_infeasible_steps: u64,
+    pub optimiser_fixed_rule_mean_cost: f64,
+}
+
+/// Units and labels for `summary.md`, in the same order as the fields.
+pub const LABELS: &[(&str, &str, &str)] = &[
+    ("speed_mps", "m/s", "walking speed"),
+    ("cadence_spm", "steps/min", "cadence"),
+    ("stride_length_m", "m", "stride length"),
+    ("step_width_m", "m", "step width"),
+    ("cycle_s", "s", "gait cycle"),
+    ("stance_pct", "%", "stance"),
+    ("double_support_pct", "%", "double support"),
+    ("pelvis_vertical_range_cm", "cm", "pelvis vertical range"),
+    ("pelvis_lateral_range_cm", "cm", "pelvis lateral range"),
+    ("pelvis_tilt_range_deg", "deg", "pelvic tilt range"),
+    ("pelvis_obliquity_range_deg", "deg", "pelvic obliquity range"),
+    ("pelvis_rotation_range_deg", "deg", "pelvic rotation range"),
+    ("hip_flex_max_deg", "deg", "peak hip flexion"),
+    ("hip_ext_max_deg", "deg", "peak hip extension"),
+    ("knee_flex_max_stance_deg", "deg", "peak knee flexion in stance"),
+    ("knee_flex_max_swing_deg", "deg", "peak knee flexion in swing"),
+    ("ankle_dorsi_max_deg", "deg", "peak ankle dorsiflexion"),
+    ("ankle_plantar_max_deg", "deg", "peak ankle plantarflexion"),
+    ("shoulder_flex_range_deg", "deg", "shoulder flexion range"),
+    ("elbow_flex_range_deg", "deg", "elbow flexion range"),
+    ("min_toe_clearance_cm", "cm", "minimum toe clearance (mid-swing)"),
+    ("max_heel_clearance_cm", "cm", "maximum heel clearance (swing)"),
+    ("foot_skate_mm", "mm", "foot skate (largest stance slide)"),
+    ("terrain_penetration_mm", "mm", "terrain penetration (deepest)"),
+    ("reach_failures", "", "IK reach failures"),
+    ("non_finite_values", "", "non-finite values"),
+    ("optimiser_steps", "", "optimiser steps"),
+    ("optimiser_mean_cost", "", "optimiser mean cost (chosen)"),
+    ("optimiser_infeasible_steps", "", "steps without a feasible candidate"),
+    ("optimiser_fixed_rule_mean_cost", "", "fixed rule's mean cost, same steps"),
+];
+
+/// Why a run cannot be summarised.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TooShort(pub String);
+
+impl std::fmt::Display for TooShort {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+fn mean(values: impl IntoIterator<Item = f64>) -> f64 {
+    let (sum, n) = values.into_iter().fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+    if n == 0 { 0.0 } else { sum / n as f64 }
+}
+
+fn span(values: impl Iterator<Item = f64>) -> f64 {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if lo.is_finite() { hi - lo } else { 0.0 }
+}
+
+/// Range of a value over a cycle after removing the straight line from its first to its
+/// last frame: on stairs and slopes the pelvis's bob, not the climb.
+fn detrended_span(cycle: &[Frame], value: impl Fn(&Frame) -> f64) -> f64 {
+    let (first, last) = (&cycle[0], &cycle[cycle.len() - 1]);
+    let (t0, t1) = (first.time_s, last.time_s.max(first.time_s + 1e-9));
+    let (v0, v1) = (value(first), value(last));
+    span(cycle.iter().map(|f| value(f) - (v0 + (v1 - v0) * (f.time_s - t0) / (t1 - t0))))
+}
+
+/// Right heel strikes: frame indices where the right leg's cycle phase wraps.
+fn right_strikes(frames: &[Frame]) -> Vec<usize> {
+    (1..frames.len()).filter(|&i| frames[i].legs[0].phase < frames[i - 1].legs[0].phase).collect()
+}
+
+/// The steady-state frame range of a run: `[first, last)` between the second and the last
+/// right heel strike.
+pub fn steady_range(frames: &[Frame]) -> Result<(usize, usize, Vec<usize>), TooShort> {
+    let strikes = right_strikes(frames);
+    if strikes.len() < 3 {
+        return Err(TooShort(format!(
+            "the walk needs at least 3 right heel strikes to measure a steady cycle; this run has {} (simulate more cycles)",
+            strikes.len()
+        )));
+    }
+    Ok((strikes[1], *strikes.last().expect("checked"), strikes[1..].to_vec()))
+}
+
+/// Measures `run`.
+pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
+    let frames = &run.frames;
+    let (first, last, strikes) = steady_range(frames)?;
+    let steady = &frames[first..last];
+    let cycles: Vec<&[Frame]> = strikes.windows(2).map(|w| &frames[w[0]..w[1]]).collect();
+    let t0 = frames[first].time_s;
+    let t1 = frames[last].time_s;
+    let cycle_s = mean(strikes.windows(2).map(|w| frames[w[1]].time_s - frames[w[0]].time_s));
+    let per_cycle = |f: &dyn Fn(&Frame) -> f64| mean(cycles.iter().map(|c| span(c.iter().map(f))));
+    let both = |f: &dyn Fn(&crate::model::walk::frame::LegFrame) -> f64| -> Vec<f64> {
+        steady.iter().flat_map(|fr| fr.legs.iter().map(f)).collect()
+    };
+    let hip = both(&|l| l.hip_flex_deg);
+    let ankle = both(&|l| l.ankle_dorsi_deg);
+    let knee_in = |stance: bool| {
+        steady
+            .iter()
+            .flat_map(|fr| fr.legs.iter())
+            .filter(|l| l.leg_phase.is_stance() == stance)
+            .map(|l| l.knee_flex_deg)
+            .fold(0.0, f64::max)
+    };
+    let swing = |l: &&crate::model::walk::frame::LegFrame| l.leg_phase == LegPhase::Swing;
+    let min_toe = steady
+        .iter()
+        .flat_map(|fr| fr.legs.iter())
+        .filter(swing)
+        .filter(|l| (0.7..=0.9).contains(&l.phase))
+        .map(|l| (l.toe.y - l.ground_under_toe) * 100.0)
+        .fold(f64::INFINITY, f64::min);
+    let max_heel = steady
+        .iter()
+        .flat_map(|fr| fr.legs.iter())
+        .filter(swing)
+        .map(|l| (l.heel.y - l.ground_under_heel) * 100.0)
+        .fold(f64::NEG_INFINITY, f64::max);
+    // Footfalls landed in the steady window: past start-up's first two steps, and not the
+    // one still being swung to at the end.
+    let end_x = frames[last].pelvis.x;
+    let landed: Vec<_> = run.footfalls.iter().filter(|f| f.step >= 2 && f.heel.x <= end_x).collect();
+    let right: Vec<f64> = landed.iter().filter(|f| f.side == Side::Right).map(|f| f.heel.x).collect();
+    let stride = mean(right.windows(2).map(|w| w[1] - w[0]));
+    let width = mean(landed.windows(2).filter(|w| w[0].side != w[1].side).map(|w| (w[1].heel.z - w[0].heel.z).abs()));
+    let checks = analysis::checks(frames);
+    // Steps decided inside the steady window (by the master phase of their toe-off).
+    let master_at = |i: usize| frames[i].time_s / run.cycle_s;
+    let steps: Vec<_> =
+        run.step_plans.iter().filter(|p| p.phase >= master_at(first) && p.phase < master_at(last)).collect();
+    let chosen: Vec<f64> = steps.iter().filter_map(|p| p.optimisation.chosen.cost).collect();
+    let fixed: Vec<f64> = steps.iter().filter_map(|p| p.optimisation.fixed_rule.cost).collect();
+    Ok(Summary {
+        speed_mps: (frames[last].pelvis.x - frames[first].pelvis.x) / (t1 - t0),
+        cadence_spm: 120.0 / cycle_s,
+        stride_length_m: stride,
+        step_width_m: width,
+        cycle_s,
+        stance_pct: 100.0
+            * steady.iter().flat_map(|fr| fr.legs.iter()).filter(|l| l.leg_phase.is_stance()).count() as f64
+            / (2 * steady.len()) as f64,
+        double_support_pct: 100.0 * steady.iter().filter(|fr| fr.support == Support::Double).count() as f64
+            / steady.len() as f64,
+        pelvis_vertical_range_cm: 100.0 * mean(cycles.iter().map(|c| detrended_span(c, |f| f.pelvis.y))),
+        pelvis_lateral_range_cm: 100.0 * per_cycle(&|f| f.pelvis.z),
+        pelvis_tilt_range_deg: per_cycle(&|f| f.pelvis_tilt_deg),
+        pelvis_obliquity_range_deg: per_cycle(&|f| f.pelvis_obliquity_deg),
+        pelvis_rotation_range_deg: per_cycle(&|f| f.pelvis_rotation_deg),
+        hip_flex_max_deg: hip.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        hip_ext_max_deg: -hip.iter().copied().fold(f64::INFINITY, f64::min),
+        knee_flex_max_stance_deg: knee_in(true),
+        knee_flex_max_swing_deg: knee_in(false),
+        ankle_dorsi_max_deg: ankle.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        ankle_plantar_max_deg: -ankle.iter().copied().fold(f64::INFINITY, f64::min),
+        shoulder_flex_range_deg: 0.5
+            * (per_cycle(&|f| f.legs[0].shoulder_flex_deg) + per_cycle(&|f| f.legs[1].shoulder_flex_deg)),
+        elbow_flex_range_deg: 0.5
+            * (per_cycle(&|f| f.legs[0].elbow_flex_deg) + per_cycle(&|f| f.legs[1].elbow_flex_deg)),
+        min_toe_clearance_cm: if min_toe.is_finite() { min_toe } else { 0.0 },
+        max_heel_clearance_cm: if max_heel.is_finite() { max_heel } else { 0.0 },
+        foot_skate_mm: checks.foot_skate_mm,
+        terrain_penetration_mm: checks.terrain_penetration_mm,
+        reach_failures: checks.reach_failures,
+        non_finite_values: checks.non_finite_values,
+        optimiser_steps: steps.len() as u64,
+        optimiser_mean_cost: mean(chosen),
+        optimiser_infeasible_steps: steps.iter().filter(|p| p.optimisation.fallback).count() as u64,
+        optimiser_fixed_rule_mean_cost: mean(fixed),
+    })
+}

@@ -1,0 +1,180 @@
+//! `gaitlab report`: a folder with the walk's figures and tables for a write-up.
+//!
+//! The folder is built under a temporary name beside the target and renamed into place at
+//! the end, so an interrupted run never leaves a folder that looks complete.
+
+pub mod metrics;
+
+use crate::analysis::{self, Run};
+use crate::config::{self, render::toml_number, schema::PARAMS};
+use crate::model::body::Side;
+use crate::model::params::WalkParams;
+use crate::model::terrain::Terrain;
+use crate::model::walk::Walker;
+use crate::output::joint_table;
+use metrics::{LABELS, Summary};
+use std::fmt::Write as _;
+use std::fs;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+/// What a report is made from.
+pub struct ReportInput<'a> {
+    /// Name shown in the summary (the config's file stem).
+    pub name: String,
+    /// The config text the parameters were read from (written back with `--set` applied).
+    pub source_text: &'a str,
+    /// The parameters, `--set` included.
+    pub params: &'a WalkParams,
+    /// Gait cycles to simulate.
+    pub cycles: u32,
+    /// Frames per second.
+    pub fps: f64,
+}
+
+/// Files of the report folder, relative to it.
+pub const FILES: &[&str] =
+    &["summary.md", "summary.json", "config.toml", "joints.csv", "footfalls.csv", "optimisation.csv"];
+
+/// Writes the report into `out` (replacing a previous one only once the new one is whole).
+/// `progress` receives a line per stage.
+pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Summary, String> {
+    progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
+    let run = analysis::run(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
+    let summary = metrics::summarise(&run).map_err(|e| e.to_string())?;
+    let terrain = Walker::new(input.params).map_err(|e| e.to_string())?.terrain().clone();
+    let parent = out.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+    let name = out.file_name().ok_or_else(|| format!("{}: not a folder name", out.display()))?.to_string_lossy();
+    let temp = parent.join(format!(".{name}.partial-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&temp);
+    let result = (|| -> Result<(), String> {
+        fs::create_dir_all(&temp).map_err(|e| format!("cannot create {}: {e}", temp.display()))?;
+        let file = |rel: &str| temp.join(rel);
+        let write = |rel: &str, text: &str| {
+            fs::write(file(rel), text).map_err(|e| format!("cannot write {}: {e}", out.join(rel).display()))
+        };
+        progress("writing tables");
+        write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
+        write("footfalls.csv", &footfalls_csv(&run, &terrain))?;
+        write("optimisation.csv", &optimisation_csv(&run))?;
+        progress("writing summary");
+        let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
+        write("summary.json", &format!("{json}\n"))?;
+        write("config.toml", &config_text(input)?)?;
+        write("summary.md", &summary_md(input, &summary))?;
+        Ok(())
+    })();
+    if let Err(e) = result {
+        let _ = fs::remove_dir_all(&temp);
+        return Err(e);
+    }
+    // Swap the finished folder in: the old one (if any) is moved aside first, as a folder
+    // cannot be renamed over a non-empty one.
+    let old = parent.join(format!(".{name}.old-{}", std::process::id()));
+    if out.exists() {
+        fs::rename(out, &old).map_err(|e| format!("cannot replace {}: {e}", out.display()))?;
+    }
+    fs::rename(&temp, out).map_err(|e| format!("cannot move the report to {}: {e}", out.display()))?;
+    let _ = fs::remove_dir_all(&old);
+    Ok(summary)
+}
+
+fn write_joints(path: &Path, run: &Run) -> io::Result<()> {
+    let mut out = io::BufWriter::new(fs::File::create(path)?);
+    joint_table::write_header(&mut out)?;
+    let mut line = String::with_capacity(512);
+    for f in &run.frames {
+        joint_table::format_row(f, &mut line);
+        line.push('\n');
+        out.write_all(line.as_bytes())?;
+    }
+    out.flush()
+}
+
+fn footfalls_csv(run: &Run, terrain: &Terrain) -> String {
+    let mut s = String::from("step,side,x,y,z,terrain_y,stride_m\n");
+    let mut last_x = [None::<f64>; 2];
+    for f in &run.footfalls {
+        let stride = last_x[f.side.index()].map_or(String::new(), |x| format!("{:.6}", f.heel.x - x));
+        last_x[f.side.index()] = Some(f.heel.x);
+        let side = if f.side == Side::Right { "r" } else { "l" };
+        let _ = writeln!(
+            s,
+            "{},{side},{:.6},{:.6},{:.6},{:.6},{stride}",
+            f.step,
+            f.heel.x,
+            f.heel.y,
+            f.heel.z,
+            terrain.height(f.heel.x)
+        );
+    }
+    s
+}
+
+fn optimisation_csv(run: &Run) -> String {
+    let mut s = String::from("step,candidate,pelvis_x,cost,feasible,chosen\n");
+    for plan in &run.step_plans {
+        let r = &plan.optimisation;
+        for (i, c) in r.candidates.iter().enumerate() {
+            let chosen = c.x == r.chosen.x && c.y == r.chosen.y;
+            let _ = writeln!(
+                s,
+                "{},{i},{:.6},{},{},{}",
+                r.step,
+                c.x,
+                c.cost.map_or(String::new(), |k| format!("{k:.6}")),
+                c.cost.is_some(),
+                chosen
+            );
+        }
+    }
+    s
+}
+
+/// The config with `--set` values written in (comments and layout kept).
+fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
+    let read = config::load_text(input.source_text, "config", &[]).map_err(|e| e.to_string())?;
+    let changed: Vec<&str> = PARAMS.iter().filter(|p| (p.get)(&read) != (p.get)(input.params)).map(|p| p.key).collect();
+    config::edit::edited_text(input.source_text, input.params, &changed)
+}
+
+fn summary_md(input: &ReportInput<'_>, s: &Summary) -> String {
+    let value = serde_json::to_value(s).expect("plain numbers");
+    let p = input.params;
+    let description =
+        input.source_text.lines().next().and_then(|l| l.strip_prefix("# preset: ")).unwrap_or("custom config");
+    let terrain = crate::config::schema::spec("terrain.kind").map_or(String::new(), |k| match (k.get)(p) {
+        crate::config::schema::Value::Word(w) => w.to_string(),
+        _ => String::new(),
+    });
+    let mut md = format!(
+        "# gaitlab report: {}\n\n{description}; terrain: {terrain}; walk.speed_mps = {}; {} cycles at {} fps \
+         (the first cycle is start-up and not measured). Config: [config.toml](config.toml).\n\n\
+         | figure | value | unit |\n|---|---:|---|\n",
+        input.name,
+        toml_number(p.walk.speed_mps),
+        input.cycles,
+        input.fps
+    );
+    for (key, unit, label) in LABELS {
+        let v = &value[*key];
+        let text = match v.as_u64() {
+            Some(n) if !key.ends_with("cost") => n.to_string(),
+            _ => format!("{:.2}", v.as_f64().unwrap_or(f64::NAN)),
+        };
+        let _ = writeln!(md, "| {label} (`{key}`) | {text} | {unit} |");
+    }
+    md.push_str(
+        "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \
+         [optimisation.csv](optimisation.csv) (every candidate of every step). Definitions of the \
+         figures: `src/report/metrics.rs`.\n",
+    );
+    md
+}
+
+/// The default report folder for a config: `reports/<stem>`.
+#[must_use]
+pub fn default_out(config: &Path) -> PathBuf {
+    Path::new("reports").join(config.file_stem().unwrap_or_default())
+}

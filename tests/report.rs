@@ -1,0 +1,174 @@
+//! `gaitlab report`: the folder's files, their headers and keys, determinism, `--set` in
+//! config.toml, failures that leave nothing behind, and a reviewed snapshot of every
+//! config's summary.json.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn gaitlab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_gaitlab")).args(args).current_dir(env!("CARGO_MANIFEST_DIR")).output().unwrap()
+}
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gaitlab-report-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+const SUMMARY_KEYS: &[&str] = &[
+    "speed_mps",
+    "cadence_spm",
+    "stride_length_m",
+    "step_width_m",
+    "cycle_s",
+    "stance_pct",
+    "double_support_pct",
+    "pelvis_vertical_range_cm",
+    "pelvis_lateral_range_cm",
+    "pelvis_tilt_range_deg",
+    "pelvis_obliquity_range_deg",
+    "pelvis_rotation_range_deg",
+    "hip_flex_max_deg",
+    "hip_ext_max_deg",
+    "knee_flex_max_stance_deg",
+    "knee_flex_max_swing_deg",
+    "ankle_dorsi_max_deg",
+    "ankle_plantar_max_deg",
+    "shoulder_flex_range_deg",
+    "elbow_flex_range_deg",
+    "min_toe_clearance_cm",
+    "max_heel_clearance_cm",
+    "foot_skate_mm",
+    "terrain_penetration_mm",
+    "reach_failures",
+    "non_finite_values",
+    "optimiser_steps",
+    "optimiser_mean_cost",
+    "optimiser_infeasible_steps",
+];
+
+fn read(dir: &Path, file: &str) -> String {
+    std::fs::read_to_string(dir.join(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
+}
+
+#[test]
+fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
+    let (a, b) = (temp("a"), temp("b"));
+    for dir in [&a, &b] {
+        let out = gaitlab(&["report", "configs/default.toml", "--out", dir.to_str().unwrap(), "--cycles", "6"]);
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), dir.display().to_string());
+    }
+    for file in gaitlab::report::FILES {
+        assert_eq!(read(&a, file), read(&b, file), "{file} differs between runs");
+    }
+    let joints = read(&a, "joints.csv");
+    assert!(joints.starts_with("frame,time_s,phase_r,phase_l,support,pelvis_x,pelvis_y,pelvis_z,"));
+    assert!(joints.lines().next().unwrap().ends_with("terrain_y_under_heel_r,terrain_y_under_heel_l"));
+    assert_eq!(read(&a, "footfalls.csv").lines().next().unwrap(), "step,side,x,y,z,terrain_y,stride_m");
+    assert_eq!(read(&a, "optimisation.csv").lines().next().unwrap(), "step,candidate,pelvis_x,cost,feasible,chosen");
+    // One chosen candidate a step.
+    let opt = read(&a, "optimisation.csv");
+    let steps: std::collections::BTreeSet<&str> = opt.lines().skip(1).map(|l| l.split(',').next().unwrap()).collect();
+    assert_eq!(opt.lines().filter(|l| l.ends_with(",true")).count(), steps.len());
+    let json: serde_json::Value = serde_json::from_str(&read(&a, "summary.json")).unwrap();
+    for key in SUMMARY_KEYS {
+        let v = json[key].as_f64().unwrap_or_else(|| panic!("{key} missing or not a number"));
+        assert!(v.is_finite(), "{key} = {v}");
+    }
+    // The figures of a normal adult walk at 1.3 m/s, measured from the frames.
+    let f = |k: &str| json[k].as_f64().unwrap();
+    assert!((f("speed_mps") - 1.3).abs() < 0.01);
+    assert!((f("stance_pct") - 62.0).abs() < 1.0);
+    assert!((f("cadence_spm") - 120.0 / f("cycle_s")).abs() < 1e-9);
+    assert!((f("stride_length_m") - f("speed_mps") * f("cycle_s")).abs() < 0.02);
+    assert!((f("step_width_m") - 0.1).abs() < 1e-6);
+    assert!(f("foot_skate_mm") < 0.5 && f("terrain_penetration_mm") < 1.0 && f("reach_failures") == 0.0);
+    assert!(f("optimiser_mean_cost") > 0.0 && f("optimiser_steps") >= 6.0, "{}", f("optimiser_steps"));
+    assert!(f("optimiser_mean_cost") < json["optimiser_fixed_rule_mean_cost"].as_f64().unwrap());
+    let md = read(&a, "summary.md");
+    for key in SUMMARY_KEYS {
+        assert!(md.contains(&format!("(`{key}`)")), "{key} not in summary.md");
+    }
+    assert_eq!(read(&a, "config.toml"), read(Path::new(env!("CARGO_MANIFEST_DIR")), "configs/default.toml"));
+    for dir in [a, b] {
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+}
+
+#[test]
+fn config_toml_holds_the_set_values_and_reloads_to_the_same_walk() {
+    let dir = temp("set");
+    let out = gaitlab(&[
+        "report",
+        "configs/stairs_up.toml",
+        "--out",
+        dir.to_str().unwrap(),
+        "--cycles",
+        "4",
+        "--set",
+        "walk.sway=1.7",
+        "--set",
+        "legs.knee_lift_cm=6.5",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = read(&dir, "config.toml");
+    assert!(text.contains("sway = 1.7") && text.contains("knee_lift_cm = 6.5"), "{text}");
+    let from_report = gaitlab::config::load(&dir.join("config.toml"), &[]).unwrap();
+    let direct = gaitlab::config::load(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/stairs_up.toml"),
+        &["walk.sway=1.7".into(), "legs.knee_lift_cm=6.5".into()],
+    )
+    .unwrap();
+    assert_eq!(from_report, direct);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn a_failed_report_leaves_no_folder_and_bad_input_exits_2() {
+    let blocker = temp("blocker");
+    std::fs::write(&blocker, "a file, not a folder").unwrap();
+    let out_dir = blocker.join("report");
+    let out = gaitlab(&["report", "configs/default.toml", "--out", out_dir.to_str().unwrap(), "--cycles", "3"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot create"));
+    assert!(!out_dir.exists());
+    std::fs::remove_file(&blocker).unwrap();
+
+    let out = gaitlab(&["report", "configs/default.toml", "--cycles", "2"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("valid: 3 to 100000"));
+    let out = gaitlab(&["report", "configs/default.toml", "--compare", "configs/elderly.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = gaitlab(&["report", "configs/default.toml", "--set", "walk.speed_mps=9"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("walk.speed_mps"));
+}
+
+/// Every config's figures, rounded to 3 decimals, so any change to the walk's numbers shows
+/// up in review.
+#[test]
+fn every_configs_summary_json() {
+    insta::glob!("../configs", "*.toml", |path| {
+        let params = gaitlab::config::load(path, &[]).unwrap();
+        let run = gaitlab::analysis::run(&params, 8.0, 60.0).unwrap();
+        let summary = gaitlab::report::metrics::summarise(&run).unwrap();
+        let value = serde_json::to_value(&summary).unwrap();
+        let rounded: serde_json::Map<String, serde_json::Value> = value
+            .as_object()
+            .unwrap()
+            .iter()
+            .map(|(k, v)| {
+                let v = match v.as_u64() {
+                    Some(n) => serde_json::json!(n),
+                    None => {
+                        let x = (v.as_f64().unwrap() * 1000.0).round() / 1000.0;
+                        serde_json::json!(if x == 0.0 { 0.0 } else { x })
+                    }
+                };
+                (k.clone(), v)
+            })
+            .collect();
+        insta::assert_snapshot!(serde_json::to_string_pretty(&rounded).unwrap());
+    });
+}
