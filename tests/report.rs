@@ -62,6 +62,31 @@ fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
     for file in gaitlab::report::FILES {
         assert_eq!(read(&a, file), read(&b, file), "{file} differs between runs");
     }
+    for plot in gaitlab::report::plots::PLOTS {
+        let svg = format!("plots/{plot}.svg");
+        assert_eq!(read(&a, &svg), read(&b, &svg), "{svg} differs between runs");
+        let png = a.join(format!("plots/{plot}.png"));
+        let img = image::open(&png).unwrap_or_else(|e| panic!("{}: {e}", png.display()));
+        assert_eq!((img.width(), img.height()), gaitlab::report::plots::SIZE, "{plot}.png size");
+        // Not blank: a plot has many colours.
+        let rgb = img.to_rgb8();
+        let distinct: std::collections::BTreeSet<[u8; 3]> = rgb.pixels().step_by(97).map(|p| p.0).collect();
+        assert!(distinct.len() > 20, "{plot}.png looks empty");
+        let text = read(&a, &svg);
+        let doc = roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{svg} is not XML: {e}"));
+        let words: String = doc.descendants().filter_map(|n| n.text()).collect::<Vec<_>>().join(" ");
+        let axis = match *plot {
+            "pelvis" | "joints" => "% of gait cycle",
+            "swing_foot" | "ankle" => "% of swing",
+            "stick_figure" => "forward x (m)",
+            _ => "step",
+        };
+        assert!(words.contains(axis), "{svg} lacks the axis label `{axis}`");
+    }
+    let md = read(&a, "summary.md");
+    for plot in gaitlab::report::plots::PLOTS {
+        assert!(md.contains(&format!("(plots/{plot}.png)")), "summary.md does not link {plot}");
+    }
     let joints = read(&a, "joints.csv");
     assert!(joints.starts_with("frame,time_s,phase_r,phase_l,support,pelvis_x,pelvis_y,pelvis_z,"));
     assert!(joints.lines().next().unwrap().ends_with("terrain_y_under_heel_r,terrain_y_under_heel_l"));

@@ -4,6 +4,7 @@
 //! the end, so an interrupted run never leaves a folder that looks complete.
 
 pub mod metrics;
+pub mod plots;
 
 use crate::analysis::{self, Run};
 use crate::config::{self, render::toml_number, schema::PARAMS};
@@ -58,6 +59,10 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
         write("footfalls.csv", &footfalls_csv(&run, &terrain))?;
         write("optimisation.csv", &optimisation_csv(&run))?;
+        progress("drawing plots");
+        let plots = temp.join("plots");
+        fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
+        plots::write_plots(&plots, &run, input.params)?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
         write("summary.json", &format!("{json}\n"))?;
@@ -164,6 +169,10 @@ fn summary_md(input: &ReportInput<'_>, s: &Summary) -> String {
             _ => format!("{:.2}", v.as_f64().unwrap_or(f64::NAN)),
         };
         let _ = writeln!(md, "| {label} (`{key}`) | {text} | {unit} |");
+    }
+    md.push_str("\n## Plots\n\n");
+    for plot in plots::PLOTS {
+        let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
     }
     md.push_str(
         "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \

@@ -98,6 +98,10 @@ pub struct StepPlan {
     pub reach_guard_drop: f64,
     /// Heel-height raises made by the swing simulation.
     pub swing_raises: u32,
+    /// The step's heel-height curve (m above the toe-off ground) as adapted to the terrain.
+    pub swing_heel_height: Curve,
+    /// The step's foot-pitch curve (deg) as adapted.
+    pub swing_ankle_deg: Curve,
 }
 
 /// A walking body.
@@ -795,6 +799,8 @@ impl Walker {
             double_support_y: self.plan.last_of(KeyKind::DoubleSupport).map_or(ds.y, |k| k.y),
             reach_guard_drop: guard_drop,
             swing_raises: plan.raises,
+            swing_heel_height: plan.heel_height.clone(),
+            swing_ankle_deg: plan.ankle_deg.clone(),
         });
         self.footfalls.push(to);
         self.legs[i].swing = Some(plan);
