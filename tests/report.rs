@@ -197,3 +197,68 @@ fn every_configs_summary_json() {
         insta::assert_snapshot!(serde_json::to_string_pretty(&rounded).unwrap());
     });
 }
+
+/// walk.bvh read back by an independent parser (bvh_anim), its channels turned into joint
+/// positions by forward kinematics: every joint within 1 mm of the model's own, every frame.
+#[test]
+fn walk_bvh_round_trips_through_an_independent_parser_to_within_a_millimetre() {
+    use bvh_anim::ChannelType;
+    use gaitlab::model::body::Bone;
+    use glam::{DQuat, DVec3};
+    let dir = temp("bvh");
+    let out = gaitlab(&["report", "configs/stairs_up.toml", "--out", dir.to_str().unwrap(), "--cycles", "4"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let bvh = bvh_anim::from_bytes(std::fs::read(dir.join("walk.bvh")).unwrap()).expect("a valid BVH");
+    let joints: Vec<_> = bvh.joints().collect();
+    assert_eq!(joints.len(), Bone::ALL.len());
+    let bones: Vec<Bone> = joints
+        .iter()
+        .map(|j| {
+            let name = j.data().name().to_string();
+            *Bone::ALL.iter().find(|b| b.name() == name).unwrap_or_else(|| panic!("unknown joint {name}"))
+        })
+        .collect();
+    let params =
+        gaitlab::config::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/stairs_up.toml"), &[]).unwrap();
+    let mut walker = gaitlab::model::walk::Walker::new(&params).unwrap();
+    let fps = params.sim.fps;
+    let frames: Vec<_> = bvh.frames().collect();
+    assert_eq!(frames.len(), (4.0 * walker.resolved().cycle_s * fps).round() as usize + 1);
+    let mut worst = 0.0f64;
+    for (i, frame) in frames.iter().enumerate() {
+        if i > 0 {
+            walker.advance(1.0 / fps);
+        }
+        let mut world: Vec<(DVec3, DQuat)> = Vec::with_capacity(joints.len());
+        for (k, j) in joints.iter().enumerate() {
+            let d = j.data();
+            let o = d.offset();
+            let mut position = DVec3::new(f64::from(o.x), f64::from(o.y), f64::from(o.z)) / 100.0;
+            let mut rotation = DQuat::IDENTITY;
+            for c in d.channels() {
+                let v = f64::from(*frame.get(c).unwrap());
+                match c.channel_type() {
+                    ChannelType::PositionX => position.x += v / 100.0,
+                    ChannelType::PositionY => position.y += v / 100.0,
+                    ChannelType::PositionZ => position.z += v / 100.0,
+                    ChannelType::RotationX => rotation *= DQuat::from_rotation_x(v.to_radians()),
+                    ChannelType::RotationY => rotation *= DQuat::from_rotation_y(v.to_radians()),
+                    ChannelType::RotationZ => rotation *= DQuat::from_rotation_z(v.to_radians()),
+                }
+            }
+            let placed = match d.parent_index() {
+                None => (position, rotation),
+                Some(p) => {
+                    let (pp, pr) = world[p];
+                    (pp + pr * position, pr * rotation)
+                }
+            };
+            world.push(placed);
+            let model = walker.pose().pos(bones[k]);
+            worst = worst.max(placed.0.distance(model));
+        }
+    }
+    eprintln!("BVH round trip: worst joint distance {:.4} mm over {} frames", worst * 1000.0, frames.len());
+    assert!(worst < 0.001, "worst joint distance {:.3} mm", worst * 1000.0);
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -1,5 +1,6 @@
 //! Files gaitlab writes: the joint table, and the atomic write every file goes through.
 
+pub mod bvh;
 pub mod joint_table;
 
 use std::fs::{self, File};

@@ -35,7 +35,7 @@ pub struct ReportInput<'a> {
 
 /// Files of the report folder, relative to it.
 pub const FILES: &[&str] =
-    &["summary.md", "summary.json", "config.toml", "joints.csv", "footfalls.csv", "optimisation.csv"];
+    &["summary.md", "summary.json", "config.toml", "joints.csv", "footfalls.csv", "optimisation.csv", "walk.bvh"];
 
 /// Writes the report into `out` (replacing a previous one only once the new one is whole).
 /// `progress` receives a line per stage.
@@ -59,6 +59,8 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
         write("footfalls.csv", &footfalls_csv(&run, &terrain))?;
         write("optimisation.csv", &optimisation_csv(&run))?;
+        progress("writing walk.bvh");
+        write_bvh(&file("walk.bvh"), input.params, &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
         progress("drawing plots");
         let plots = temp.join("plots");
         fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
@@ -93,6 +95,22 @@ fn write_joints(path: &Path, run: &Run) -> io::Result<()> {
         joint_table::format_row(f, &mut line);
         line.push('\n');
         out.write_all(line.as_bytes())?;
+    }
+    out.flush()
+}
+
+/// Re-walks the run (the frames keep the legs only) and writes every frame's full pose.
+fn write_bvh(path: &Path, params: &WalkParams, run: &Run) -> io::Result<()> {
+    let mut walker = Walker::new(params).map_err(io::Error::other)?;
+    let mut out = io::BufWriter::new(fs::File::create(path)?);
+    let dims = walker.resolved().dims.clone();
+    crate::output::bvh::write_header(&mut out, &dims, run.frames.len(), run.fps)?;
+    let mut line = String::with_capacity(1024);
+    for i in 0..run.frames.len() {
+        if i > 0 {
+            walker.advance(1.0 / run.fps);
+        }
+        crate::output::bvh::write_frame(&mut out, walker.pose(), &mut line)?;
     }
     out.flush()
 }
