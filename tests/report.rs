@@ -163,8 +163,9 @@ fn a_failed_report_leaves_no_folder_and_bad_input_exits_2() {
     let out = gaitlab(&["report", "configs/default.toml", "--cycles", "2"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("valid: 3 to 100000"));
-    let out = gaitlab(&["report", "configs/default.toml", "--compare", "configs/elderly.toml"]);
+    let out = gaitlab(&["report", "configs/default.toml", "--compare", "configs/no_such.toml"]);
     assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no_such.toml"));
     let out = gaitlab(&["report", "configs/default.toml", "--set", "walk.speed_mps=9"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("walk.speed_mps"));
@@ -260,5 +261,37 @@ fn walk_bvh_round_trips_through_an_independent_parser_to_within_a_millimetre() {
     }
     eprintln!("BVH round trip: worst joint distance {:.4} mm over {} frames", worst * 1000.0, frames.len());
     assert!(worst < 0.001, "worst joint distance {:.3} mm", worst * 1000.0);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn a_comparison_report_names_both_walks_in_legends_and_columns() {
+    let dir = temp("compare");
+    let out = gaitlab(&[
+        "report",
+        "configs/default.toml",
+        "--compare",
+        "configs/elderly.toml",
+        "--out",
+        dir.to_str().unwrap(),
+        "--cycles",
+        "4",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let md = read(&dir, "summary.md");
+    assert!(md.contains("| figure | default | elderly | unit |"), "{md}");
+    // Every figure row has a value for each walk, and the speeds differ as the presets do.
+    let speed = md.lines().find(|l| l.contains("(`speed_mps`)")).unwrap();
+    let cells: Vec<&str> = speed.split('|').map(str::trim).collect();
+    assert_eq!(&cells[2..5], &["1.30", "0.95", "m/s"], "{speed}");
+    for plot in ["pelvis", "joints"] {
+        let svg = read(&dir, &format!("plots/{plot}.svg"));
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let words: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
+        assert!(words.contains(&"default") && words.contains(&"elderly"), "{plot} legend lacks a walk's name");
+    }
+    // summary.json stays the report's own walk.
+    let json: serde_json::Value = serde_json::from_str(&read(&dir, "summary.json")).unwrap();
+    assert!((json["speed_mps"].as_f64().unwrap() - 1.3).abs() < 0.01);
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -102,7 +102,7 @@ pub enum Command {
         /// Gait cycles to simulate [default: the config's sim.cycles]
         #[arg(long)]
         cycles: Option<u32>,
-        /// Overlay another config's walk (not built yet: refused with exit 2)
+        /// Overlay another config's walk in the plots and put its figures beside (repeatable)
         #[arg(long)]
         compare: Vec<PathBuf>,
         /// Override a key: --set walk.speed_mps=1.4 (repeatable)
@@ -168,10 +168,6 @@ fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
 
 fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathBuf], sets: &[String]) -> ExitCode {
     use std::io::IsTerminal;
-    if !compare.is_empty() {
-        eprintln!("gaitlab report: --compare is not built yet; write one report per config for now");
-        return 2;
-    }
     let params = match load_config(path, sets) {
         Ok(p) => p,
         Err(code) => return code,
@@ -190,6 +186,13 @@ fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathB
             return 2;
         }
     };
+    let mut others = Vec::new();
+    for other in compare {
+        match load_config(other, sets) {
+            Ok(p) => others.push((other.file_stem().map_or("other".into(), |s| s.to_string_lossy().into_owned()), p)),
+            Err(code) => return code,
+        }
+    }
     let out = out.map_or_else(|| crate::report::default_out(path), Path::to_path_buf);
     let input = crate::report::ReportInput {
         name: path.file_stem().map_or("config".into(), |s| s.to_string_lossy().into_owned()),
@@ -197,6 +200,7 @@ fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathB
         params: &params,
         cycles,
         fps: params.sim.fps,
+        compare: others,
     };
     let tty = io::stderr().is_terminal();
     let mut progress = |stage: &str| {

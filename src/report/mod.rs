@@ -31,6 +31,8 @@ pub struct ReportInput<'a> {
     pub cycles: u32,
     /// Frames per second.
     pub fps: f64,
+    /// Other walks to compare with (`--compare`): name and parameters.
+    pub compare: Vec<(String, WalkParams)>,
 }
 
 /// Files of the report folder, relative to it.
@@ -43,6 +45,13 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
     let run = analysis::run(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
     let summary = metrics::summarise(&run).map_err(|e| e.to_string())?;
+    let mut others = Vec::new();
+    for (name, params) in &input.compare {
+        progress(&format!("simulating {name} for comparison"));
+        let run = analysis::run(params, f64::from(input.cycles), input.fps).map_err(|e| format!("{name}: {e}"))?;
+        let summary = metrics::summarise(&run).map_err(|e| format!("{name}: {e}"))?;
+        others.push((name.clone(), params, run, summary));
+    }
     let terrain = Walker::new(input.params).map_err(|e| e.to_string())?.terrain().clone();
     let parent = out.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
@@ -64,12 +73,15 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         progress("drawing plots");
         let plots = temp.join("plots");
         fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
-        plots::write_plots(&plots, &run, input.params)?;
+        let mut walks = vec![plots::Walk { name: input.name.clone(), run: &run, params: input.params }];
+        walks.extend(others.iter().map(|(name, params, run, _)| plots::Walk { name: name.clone(), run, params }));
+        plots::write_plots(&plots, &walks)?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
         write("summary.json", &format!("{json}\n"))?;
         write("config.toml", &config_text(input)?)?;
-        write("summary.md", &summary_md(input, &summary))?;
+        let compared: Vec<(&str, &Summary)> = others.iter().map(|(n, _, _, s)| (n.as_str(), s)).collect();
+        write("summary.md", &summary_md(input, &summary, &compared))?;
         Ok(())
     })();
     if let Err(e) = result {
@@ -162,8 +174,11 @@ fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
     config::edit::edited_text(input.source_text, input.params, &changed)
 }
 
-fn summary_md(input: &ReportInput<'_>, s: &Summary) -> String {
-    let value = serde_json::to_value(s).expect("plain numbers");
+fn summary_md(input: &ReportInput<'_>, s: &Summary, others: &[(&str, &Summary)]) -> String {
+    let values: Vec<serde_json::Value> = std::iter::once(s)
+        .chain(others.iter().map(|(_, o)| *o))
+        .map(|x| serde_json::to_value(x).expect("plain numbers"))
+        .collect();
     let p = input.params;
     let description =
         input.source_text.lines().next().and_then(|l| l.strip_prefix("# preset: ")).unwrap_or("custom config");
@@ -174,19 +189,35 @@ fn summary_md(input: &ReportInput<'_>, s: &Summary) -> String {
     let mut md = format!(
         "# gaitlab report: {}\n\n{description}; terrain: {terrain}; walk.speed_mps = {}; {} cycles at {} fps \
          (the first cycle is start-up and not measured). Config: [config.toml](config.toml).\n\n\
-         | figure | value | unit |\n|---|---:|---|\n",
+         {}",
         input.name,
         toml_number(p.walk.speed_mps),
         input.cycles,
-        input.fps
+        input.fps,
+        if others.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "Compared with {} (same cycles and frame rate); the plots overlay their pelvis curves and joint angles.\n\n",
+                others.iter().map(|(n, _)| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+            )
+        }
     );
+    let names: Vec<&str> = std::iter::once(input.name.as_str()).chain(others.iter().map(|(n, _)| *n)).collect();
+    let _ = writeln!(md, "| figure | {} | unit |", names.join(" | "));
+    let _ = writeln!(md, "|---|{}---|", "---:|".repeat(names.len()));
     for (key, unit, label) in LABELS {
-        let v = &value[*key];
-        let text = match v.as_u64() {
-            Some(n) if !key.ends_with("cost") => n.to_string(),
-            _ => format!("{:.2}", v.as_f64().unwrap_or(f64::NAN)),
-        };
-        let _ = writeln!(md, "| {label} (`{key}`) | {text} | {unit} |");
+        let cells: Vec<String> = values
+            .iter()
+            .map(|value| {
+                let v = &value[*key];
+                match v.as_u64() {
+                    Some(n) if !key.ends_with("cost") => n.to_string(),
+                    _ => format!("{:.2}", v.as_f64().unwrap_or(f64::NAN)),
+                }
+            })
+            .collect();
+        let _ = writeln!(md, "| {label} (`{key}`) | {} | {unit} |", cells.join(" | "));
     }
     md.push_str("\n## Plots\n\n");
     for plot in plots::PLOTS {

@@ -205,12 +205,18 @@ fn cycle_chart<DB: DrawingBackend>(
     Ok(())
 }
 
-fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
-    root.fill(&WHITE).map_err(err)?;
-    let root = root
-        .titled("Pelvis over the right gait cycle (mean and min-max band of the steady cycles)", (FONT, 34))
-        .map_err(err)?;
-    let areas = root.split_evenly((2, 3));
+/// Pelvis panels: title, unit.
+const PELVIS_PANELS: [(&str, &str); 6] = [
+    ("tilt", "anterior tilt (deg)"),
+    ("obliquity", "right hip up (deg)"),
+    ("rotation", "right hip forward (deg)"),
+    ("vertical", "height above lower foot's ground (cm)"),
+    ("lateral", "position, right + (cm)"),
+    ("forward velocity", "velocity (m/s)"),
+];
+
+/// The six pelvis quantities of one walk over its right cycle, in [`PELVIS_PANELS`] order.
+fn pelvis_cycles(d: &Data<'_>) -> Vec<Cycle> {
     let f = &d.run.frames;
     let dt = 1.0 / d.run.fps;
     let velocity = |i: usize| {
@@ -218,29 +224,52 @@ fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res
         (f[b].pelvis.x - f[a].pelvis.x) / ((b - a).max(1) as f64 * dt)
     };
     let base_y = |i: usize| f[i].pelvis.y - f[i].legs.iter().map(|l| l.ground_under_heel).fold(f64::INFINITY, f64::min);
-    type PerFrame<'f> = Box<dyn Fn(usize) -> f64 + 'f>;
-    let panels: [(&str, &str, PerFrame); 6] = [
-        ("tilt", "anterior tilt (deg)", Box::new(|i| f[i].pelvis_tilt_deg)),
-        ("obliquity", "right hip up (deg)", Box::new(|i| f[i].pelvis_obliquity_deg)),
-        ("rotation", "right hip forward (deg)", Box::new(|i| f[i].pelvis_rotation_deg)),
-        ("vertical", "height above lower foot's ground (cm)", Box::new(move |i| base_y(i) * 100.0)),
-        ("lateral", "position, right + (cm)", Box::new(|i| f[i].pelvis.z * 100.0)),
-        ("forward velocity", "velocity (m/s)", Box::new(velocity)),
-    ];
-    for (area, (title, unit, value)) in areas.iter().zip(panels.iter()) {
-        let c = d.cycle(0, value.as_ref());
-        cycle_chart(area, title, unit, &[("pelvis", RIGHT, &c)], &d.events)?;
+    vec![
+        d.cycle(0, &|i| f[i].pelvis_tilt_deg),
+        d.cycle(0, &|i| f[i].pelvis_obliquity_deg),
+        d.cycle(0, &|i| f[i].pelvis_rotation_deg),
+        d.cycle(0, &|i| base_y(i) * 100.0),
+        d.cycle(0, &|i| f[i].pelvis.z * 100.0),
+        d.cycle(0, &velocity),
+    ]
+}
+
+/// Colours of compared walks, the report's own first.
+const PALETTE: [RGBColor; 5] = [
+    RGBColor(200, 40, 40),
+    RGBColor(30, 80, 200),
+    RGBColor(30, 150, 60),
+    RGBColor(230, 130, 0),
+    RGBColor(130, 40, 170),
+];
+
+fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
+    root.fill(&WHITE).map_err(err)?;
+    let root = root
+        .titled("Pelvis over the right gait cycle (mean and min-max band of the steady cycles)", (FONT, 34))
+        .map_err(err)?;
+    let areas = root.split_evenly((2, 3));
+    let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
+    for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
+        let lines: Vec<(&str, RGBColor, &Cycle)> = walks
+            .iter()
+            .enumerate()
+            .map(|(k, (name, _))| (name.as_str(), PALETTE[k % PALETTE.len()], &cycles[k][p]))
+            .collect();
+        cycle_chart(area, title, unit, &lines, &walks[0].1.events)?;
     }
     root.present().map_err(err)
 }
 
-fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
+fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root
-        .titled("Joint angles, each leg over its own gait cycle (mean and min-max band)", (FONT, 34))
-        .map_err(err)?;
+    let title = if walks.len() == 1 {
+        "Joint angles, each leg over its own gait cycle (mean and min-max band)"
+    } else {
+        "Joint angles of the right leg, each walk over its own gait cycle (mean and min-max band)"
+    };
+    let root = root.titled(title, (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 3));
-    let f = &d.run.frames;
     type Pick = fn(&crate::model::walk::frame::LegFrame) -> f64;
     let joints: [(&str, &str, Pick); 3] = [
         ("hip", "flexion + (deg)", |l| l.hip_flex_deg),
@@ -248,9 +277,18 @@ fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res
         ("ankle", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
     ];
     for (area, (name, unit, pick)) in areas.iter().zip(joints) {
-        let r = d.cycle(0, &|i| pick(&f[i].legs[0]));
-        let l = d.cycle(1, &|i| pick(&f[i].legs[1]));
-        cycle_chart(area, name, unit, &[("right", RIGHT, &r), ("left", LEFT, &l)], &d.events)?;
+        let mut cycles = Vec::new();
+        for (k, (walk, d)) in walks.iter().enumerate() {
+            let f = &d.run.frames;
+            if walks.len() == 1 {
+                cycles.push(("right".to_string(), RIGHT, d.cycle(0, &|i| pick(&f[i].legs[0]))));
+                cycles.push(("left".to_string(), LEFT, d.cycle(1, &|i| pick(&f[i].legs[1]))));
+            } else {
+                cycles.push((walk.clone(), PALETTE[k % PALETTE.len()], d.cycle(0, &|i| pick(&f[i].legs[0]))));
+            }
+        }
+        let lines: Vec<(&str, RGBColor, &Cycle)> = cycles.iter().map(|(n, c, cy)| (n.as_str(), *c, cy)).collect();
+        cycle_chart(area, name, unit, &lines, &walks[0].1.events)?;
     }
     root.present().map_err(err)
 }
@@ -621,16 +659,28 @@ macro_rules! both {
     }};
 }
 
-/// Writes every plot of [`PLOTS`] into `dir` (which must exist).
-pub fn write_plots(dir: &Path, run: &Run, params: &WalkParams) -> Res {
+/// A walk to plot: its name (legend), run and parameters.
+pub struct Walk<'a> {
+    /// Legend name (the config's file stem).
+    pub name: String,
+    /// The simulated walk.
+    pub run: &'a Run,
+    /// Its parameters.
+    pub params: &'a WalkParams,
+}
+
+/// Writes every plot of [`PLOTS`] into `dir` (which must exist). The first walk is the
+/// report's; others (from `--compare`) are overlaid on the pelvis and joint-angle plots.
+pub fn write_plots(dir: &Path, walks: &[Walk<'_>]) -> Res {
     register_font();
-    let d = Data::new(run, params);
-    let walker = Walker::new(params).map_err(|e| e.to_string())?;
-    both!(dir, "pelvis", pelvis, &d);
-    both!(dir, "swing_foot", swing_foot, &d, &walker);
-    both!(dir, "ankle", ankle, &d, &walker);
-    both!(dir, "joints", joints, &d);
-    both!(dir, "stick_figure", stick_figure, &d);
-    both!(dir, "optimisation", optimisation, &d);
+    let all: Vec<(String, Data<'_>)> = walks.iter().map(|w| (w.name.clone(), Data::new(w.run, w.params))).collect();
+    let d = &all[0].1;
+    let walker = Walker::new(walks[0].params).map_err(|e| e.to_string())?;
+    both!(dir, "pelvis", pelvis, &all);
+    both!(dir, "swing_foot", swing_foot, d, &walker);
+    both!(dir, "ankle", ankle, d, &walker);
+    both!(dir, "joints", joints, &all);
+    both!(dir, "stick_figure", stick_figure, d);
+    both!(dir, "optimisation", optimisation, d);
     Ok(())
 }
