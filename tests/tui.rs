@@ -317,3 +317,39 @@ fn a_configs_keys_table_rebinds_keys_and_bad_entries_are_named() {
     assert!(err.contains("expected a key name"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn export_writes_a_report_of_the_edited_parameters_in_the_background() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-export-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut app = walked(Some(&config("default")), 10);
+    app.export_dir = dir.clone();
+    select(&mut app, "walk.speed_mps");
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Right);
+    }
+    assert!((app.params.walk.speed_mps - 1.4).abs() < 1e-9);
+    key(&mut app, KeyCode::Char('e'));
+    assert!(app.exporting());
+    // The lab keeps walking while the report is written.
+    let t = app.walker.time_s();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    let mut stages = Vec::new();
+    while app.exporting() {
+        app.tick(1.0 / 60.0);
+        if app.poll_export() {
+            stages.push(app.message.clone().unwrap_or_default());
+        }
+        assert!(std::time::Instant::now() < deadline, "the report never finished");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    assert!(app.walker.time_s() > t);
+    let last = stages.last().unwrap();
+    assert!(last.starts_with("report written to"), "{stages:?}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("default/summary.json")).unwrap()).unwrap();
+    assert!((json["speed_mps"].as_f64().unwrap() - 1.4).abs() < 0.02, "{}", json["speed_mps"]);
+    let saved = std::fs::read_to_string(dir.join("default/config.toml")).unwrap();
+    assert!(saved.contains("speed_mps = 1.4"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -220,6 +220,16 @@ pub struct App {
     pub show_timings: bool,
     /// Key bindings (the defaults with the config's `[keys]`).
     pub keymap: KeyMap,
+    /// Where exported reports go (`<export_dir>/<config stem>`).
+    pub export_dir: PathBuf,
+    /// A report being written in the background.
+    export: Option<std::sync::mpsc::Receiver<ExportMsg>>,
+}
+
+/// What the report thread tells the lab.
+enum ExportMsg {
+    Progress(String),
+    Done(Result<PathBuf, String>),
 }
 
 impl App {
@@ -254,6 +264,8 @@ impl App {
             sim_dt: 1.0 / 60.0,
             show_timings: false,
             keymap: KeyMap::default(),
+            export_dir: PathBuf::from("reports"),
+            export: None,
         };
         app.record_trace();
         Ok(app)
@@ -431,6 +443,7 @@ impl App {
                 self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
             }
             Action::RerunOptimiser => self.rerun_optimiser(),
+            Action::Export => self.start_export(),
             Action::NextMethod => {
                 let i = SearchMethod::ALL.iter().position(|m| *m == self.params.optimiser.method).unwrap_or(0);
                 let next = SearchMethod::ALL[(i + 1) % SearchMethod::ALL.len()];
@@ -612,6 +625,74 @@ impl App {
                 ));
             }
             Err(e) => self.message = Some(format!("not saved: {e}")),
+        }
+    }
+
+    /// Whether a report is being written.
+    #[must_use]
+    pub fn exporting(&self) -> bool {
+        self.export.is_some()
+    }
+
+    /// Starts writing a report of the current parameters on a worker thread; the lab stays
+    /// responsive and shows the stages in the status line.
+    fn start_export(&mut self) {
+        if self.export.is_some() {
+            self.message = Some("a report is already being written".into());
+            return;
+        }
+        let stem =
+            self.path.as_ref().and_then(|p| p.file_stem()).map_or("lab".into(), |s| s.to_string_lossy().into_owned());
+        let out = self.export_dir.join(&stem);
+        let params = self.params.clone();
+        let source = self.source_text.clone();
+        let cycles = params.sim.cycles.max(3);
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let input = crate::report::ReportInput {
+                name: stem,
+                source_text: &source,
+                params: &params,
+                cycles,
+                fps: params.sim.fps,
+                compare: Vec::new(),
+            };
+            let progress_tx = tx.clone();
+            let mut progress = |stage: &str| {
+                let _ = progress_tx.send(ExportMsg::Progress(stage.to_string()));
+            };
+            let result = crate::report::write_report(&input, &out, &mut progress).map(|_| out);
+            let _ = tx.send(ExportMsg::Done(result));
+        });
+        self.export = Some(rx);
+        self.message = Some("report: starting".into());
+    }
+
+    /// Takes what the report thread has said; returns whether anything changed on screen.
+    pub fn poll_export(&mut self) -> bool {
+        let Some(rx) = &self.export else { return false };
+        let mut changed = false;
+        loop {
+            match rx.try_recv() {
+                Ok(ExportMsg::Progress(stage)) => {
+                    self.message = Some(format!("report: {stage}…"));
+                    changed = true;
+                }
+                Ok(ExportMsg::Done(result)) => {
+                    self.message = Some(match result {
+                        Ok(path) => format!("report written to {}", path.display()),
+                        Err(e) => format!("report failed: {e}"),
+                    });
+                    self.export = None;
+                    return true;
+                }
+                Err(std::sync::mpsc::TryRecvError::Empty) => return changed,
+                Err(std::sync::mpsc::TryRecvError::Disconnected) => {
+                    self.message = Some("report failed: the writer stopped".into());
+                    self.export = None;
+                    return true;
+                }
+            }
         }
     }
 

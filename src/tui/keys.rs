@@ -65,11 +65,13 @@ pub enum Action {
     RerunOptimiser,
     /// Next optimiser method.
     NextMethod,
+    /// Write a report of the current parameters (in the background).
+    Export,
 }
 
 impl Action {
     /// Every action, in the order of its `[keys]` name table.
-    pub const ALL: [Action; 30] = [
+    pub const ALL: [Action; 31] = [
         Action::Quit,
         Action::Help,
         Action::Pause,
@@ -100,6 +102,7 @@ impl Action {
         Action::NextPanel,
         Action::RerunOptimiser,
         Action::NextMethod,
+        Action::Export,
     ];
 
     /// Its name in a config's `[keys]` table.
@@ -136,6 +139,7 @@ impl Action {
             Action::NextPanel => "next_panel",
             Action::RerunOptimiser => "rerun_optimiser",
             Action::NextMethod => "next_method",
+            Action::Export => "export",
         }
     }
 }
@@ -179,14 +183,14 @@ pub const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("tab", Action::NextPanel),
     ("o", Action::RerunOptimiser),
     ("m", Action::NextMethod),
+    ("e", Action::Export),
 ];
 
 /// The help's lines: the actions each line covers, and what they do.
 pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::Help], "show or hide this help"),
     (&[Action::Quit], "quit (asks when edits are unsaved)"),
-    (&[Action::Pause], "pause / resume"),
-    (&[Action::Step], "one frame forward (pauses)"),
+    (&[Action::Pause, Action::Step], "pause or resume / one frame forward"),
     (&[Action::Slower, Action::Faster], "slower / faster (0.125x to 4x)"),
     (&[Action::Restart], "restart the walk"),
     (&[Action::Up, Action::Down], "select a parameter"),
@@ -205,6 +209,7 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::NextPanel], "next panel (small screens)"),
     (&[Action::RerunOptimiser], "re-run the optimiser on the last step"),
     (&[Action::NextMethod], "next optimiser method"),
+    (&[Action::Export], "export a report of these parameters"),
 ];
 
 /// A key as written in `[keys]`: `q`, `Q`, `?`, `space`, `enter`, `ctrl+r`, `shift+left`.

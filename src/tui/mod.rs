@@ -152,8 +152,15 @@ fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result
             drawn_this_second += 1;
         }
         let walking = !app.paused;
-        // Idle: wake once a second only to notice a signal; nothing is drawn.
-        let timeout = if walking { frame_interval.saturating_sub(last_tick.elapsed()) } else { Duration::from_secs(1) };
+        // Idle: wake once a second only to notice a signal; nothing is drawn. A report being
+        // written is polled ten times a second for its progress.
+        let timeout = if walking {
+            frame_interval.saturating_sub(last_tick.elapsed())
+        } else if app.exporting() {
+            Duration::from_millis(100)
+        } else {
+            Duration::from_secs(1)
+        };
         if event::poll(timeout)? {
             // Coalesce: handle everything queued before drawing once.
             loop {
@@ -173,6 +180,7 @@ fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result
                 }
             }
         }
+        dirty |= app.poll_export();
         let now = Instant::now();
         if app.paused {
             last_tick = now;
