@@ -53,11 +53,25 @@ fn frame_update(c: &mut Criterion) {
 }
 
 fn toe_off_planning(c: &mut Criterion) {
-    for (name, optimiser) in [("default", false), ("stairs_up", false), ("default", true), ("stairs_up", true)] {
+    // (config, optimiser on, fixed rule costed for the comparison)
+    let cases = [
+        ("default", false, false),
+        ("stairs_up", false, false),
+        ("default", false, true),
+        ("stairs_up", false, true),
+        ("default", true, true),
+        ("stairs_up", true, true),
+    ];
+    for (name, optimiser, costed) in cases {
         let mut params = presets::params(name).unwrap().unwrap();
         params.optimiser.enabled = optimiser;
-        let label = if optimiser { "with the thesis optimiser" } else { "optimiser off" };
+        let label = match (optimiser, costed) {
+            (true, _) => "with the thesis optimiser",
+            (false, true) => "optimiser off, fixed rule costed",
+            (false, false) => "swing planning alone",
+        };
         let mut w = Walker::new(&params).unwrap();
+        w.set_cost_fixed_rule(costed);
         let step = 0.001 * w.resolved().cycle_s;
         // Walk until one small step short of a right toe-off, on the stairs if there are any.
         let mut seen_toe_offs = 0;

@@ -123,6 +123,7 @@ pub struct Walker {
     last_problem: Option<StepProblem>,
     last_ds_ratio: f64,
     infeasible_steps: u64,
+    cost_fixed_rule: bool,
     reach_failures: u64,
     pelvis: PelvisPose,
     arm_hang: ArmHang,
@@ -242,6 +243,7 @@ impl Walker {
             last_problem: None,
             last_ds_ratio: 0.5,
             infeasible_steps: 0,
+            cost_fixed_rule: true,
             reach_failures: 0,
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
@@ -563,8 +565,11 @@ impl Walker {
             heel_rise_allowance: f64::INFINITY,
             fixed_rule_cost: None,
             orientations: Vec::new(),
-        }
-        .with_allowance(self);
+        };
+        // With the optimiser off nothing needs a cost but the comparison, which callers that
+        // only want the walk (or want to time the swing planning alone) can switch off.
+        let problem =
+            if problem.settings.enabled || self.cost_fixed_rule { problem.with_allowance(self) } else { problem };
         let fixed_x = problem.fixed_rule_x();
         let fixed_rule = Candidate { x: fixed_x, y: ds.y, cost: problem.fixed_rule_cost };
         let (method, candidates) = if problem.settings.enabled {
@@ -998,6 +1003,13 @@ impl Walker {
     #[must_use]
     pub fn last_step_problem(&self) -> Option<&StepProblem> {
         self.last_problem.as_ref()
+    }
+
+    /// Whether, with the optimiser off, each step still costs the fixed rule's position (for
+    /// the "with and without" comparison of `gaitlab optimise` and the report). On by
+    /// default; off leaves those records' costs empty and the walk unchanged.
+    pub fn set_cost_fixed_rule(&mut self, on: bool) {
+        self.cost_fixed_rule = on;
     }
 
     /// Steps at which no candidate pelvis position was feasible.
