@@ -577,11 +577,17 @@ impl Walker {
         } else {
             (None, vec![fixed_rule])
         };
-        let best = candidates
-            .iter()
-            .filter(|c| c.cost.is_some())
-            .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
-            .copied();
+        // Off, the fixed rule is the choice whatever its cost (or whether it was costed at
+        // all); the reach guard after the choice keeps the legs able to reach.
+        let best = if method.is_none() {
+            Some(fixed_rule)
+        } else {
+            candidates
+                .iter()
+                .filter(|c| c.cost.is_some())
+                .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
+                .copied()
+        };
         let fallback = best.is_none();
         let chosen = best.unwrap_or_else(|| {
             self.infeasible_steps += 1;
