@@ -76,6 +76,15 @@ impl Session {
 
     /// The terminal is back to normal: alternate screen left, cursor visible.
     fn assert_restored(&self) {
+        // The child may exit before the reader thread has drained the pty: wait for the
+        // restoring bytes to arrive (they are the last the lab writes).
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while !String::from_utf8_lossy(&self.output.lock().unwrap()).contains("\x1b[?1049l")
+            && Instant::now() < deadline
+        {
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        std::thread::sleep(Duration::from_millis(100));
         let bytes = self.output.lock().unwrap().clone();
         let text = String::from_utf8_lossy(&bytes);
         let entered = text.rfind("\x1b[?1049h").expect("entered the alternate screen");
