@@ -79,7 +79,10 @@ fn draw_canvas(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let end = |b: Bone| pose.point(b, dims.end_offset(b));
     let view = app.view;
     let terrain = app.walker.terrain();
-    let footfalls: Vec<DVec3> = app.walker.footfalls().iter().map(|f| f.heel).collect();
+    // Only the footfalls in view: the list grows with every step of a long session, and
+    // copying all of it each frame would make frames slower the longer the lab runs.
+    let footfalls: Vec<DVec3> =
+        app.walker.footfalls().iter().rev().take_while(|f| f.heel.x >= x_bounds[0] - 1.0).map(|f| f.heel).collect();
     let legs = app.frame.legs;
     let canvas = Canvas::default().marker(marker).x_bounds(x_bounds).y_bounds([y0, y0 + height_m]).paint(move |ctx| {
         // Terrain.
