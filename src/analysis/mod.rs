@@ -10,6 +10,8 @@
 //! - **stance %**: frames in which a leg is in one of its three stance phases, over frames;
 //! - **cycle**: heel strike to heel strike of the right leg; the first cycle is start-up.
 
+pub mod ik;
+
 use crate::model::body::Side;
 use crate::model::params::WalkParams;
 use crate::model::walk::frame::{Frame, Support};

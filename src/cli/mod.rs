@@ -6,6 +6,7 @@ use crate::model::walk::Walker;
 use crate::output::{joint_table, write_atomic};
 use clap::{Parser, Subcommand};
 
+mod ik;
 mod optimise;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -109,6 +110,26 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// Solve the walk's IK targets with each solver; print error, iteration and timing tables
+    Ik {
+        /// Config file.
+        config: PathBuf,
+        /// Solvers to compare, comma-separated: analytic, ccd, fabrik, jacobian_dls, gradient [default: all]
+        #[arg(long, value_name = "LIST")]
+        solvers: Option<String>,
+        /// Gait cycles whose targets are solved [default: the config's sim.cycles]
+        #[arg(long)]
+        cycles: Option<u32>,
+        /// Frames per second [default: the config's sim.fps]
+        #[arg(long)]
+        fps: Option<f64>,
+        /// One JSON object a line, one per solver
+        #[arg(long)]
+        json: bool,
+        /// Override a key: --set ik.limits=false (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// List the presets: name, then a short description
     Presets,
     /// Print a complete, commented config
@@ -146,6 +167,9 @@ pub fn run(cli: Cli) -> ExitCode {
         Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
         Some(Command::Report { config, out, cycles, compare, sets }) => {
             report(&config, out.as_deref(), cycles, &compare, &sets)
+        }
+        Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
+            ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets)
         }
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {

@@ -4,6 +4,7 @@
 //! TUI's parameter editor. Defaults come from `WalkParams::default()`, never from here.
 
 use crate::model::body::Sex;
+use crate::model::ik::{IkSolverKind, JacobianVariant};
 use crate::model::params::{CostForm, SearchMethod, TerrainChoice, WalkParams};
 
 /// A parameter's value.
@@ -135,6 +136,43 @@ macro_rules! auto {
     };
 }
 
+macro_rules! int {
+    ($grp:ident => $field:ident, $ty:ty, $min:expr, $max:expr, $doc:expr) => {
+        ParamSpec {
+            key: concat!(stringify!($grp), ".", stringify!($field)),
+            unit: "",
+            doc: $doc,
+            kind: Kind::Int { min: $min, max: $max },
+            get: |p| Value::Int(p.$grp.$field as i64),
+            set: |p, v| {
+                if let Value::Int(n) = v {
+                    // In range: checked against `kind` before any set.
+                    p.$grp.$field = <$ty>::try_from(*n).unwrap_or_default();
+                }
+            },
+        }
+    };
+}
+
+macro_rules! switch {
+    ($grp:ident => $field:ident, $doc:expr) => {
+        ParamSpec {
+            key: concat!(stringify!($grp), ".", stringify!($field)),
+            unit: "",
+            doc: $doc,
+            kind: Kind::Bool,
+            get: |p| Value::Bool(p.$grp.$field),
+            set: |p, v| {
+                if let Value::Bool(b) = v {
+                    p.$grp.$field = *b;
+                }
+            },
+        }
+    };
+}
+
+const SOLVERS: &[&str] = &["analytic", "ccd", "fabrik", "jacobian_dls", "gradient"];
+const JACOBIAN_VARIANTS: &[&str] = &["dls", "transpose", "pseudo_inverse"];
 const SEXES: &[&str] = &["female", "male"];
 const METHODS: &[&str] = &["thesis", "golden", "brent", "joint"];
 const COST_FORMS: &[&str] = &["squared", "absolute"];
@@ -191,6 +229,53 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(arms => spread_deg, "deg", 0.0, 45.0, "Arm abduction away from the trunk"),
     real!(arms => counter_rotation_pct, "%", 0.0, 150.0, "Thorax counter-rotation against the pelvic rotation"),
     real!(ik => reach_margin, "", 0.95, 1.0, "Share of full leg reach the planner keeps the stance leg within (the knee never locks)"),
+    ParamSpec {
+        key: "ik.solver",
+        unit: "",
+        doc: "Leg IK: analytic (exact, the reference), ccd, fabrik, jacobian_dls or gradient (seed 002); the planner always predicts with analytic",
+        kind: Kind::Choice(SOLVERS),
+        get: |p| Value::Word(p.ik.solver.name()),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.ik.solver = IkSolverKind::from_name(w).unwrap_or(IkSolverKind::Analytic);
+            }
+        },
+    },
+    real!(ik => tolerance_mm, "mm", 0.001, 10.0, "Iterative solvers stop when the ankle is this close to its target and the knee this close to the reference plane"),
+    int!(ik => max_iterations, u32, 1, 1_000_000, "Most iterations of ccd, fabrik and jacobian_dls per solve"),
+    switch!(ik => limits, "Iterative solvers keep the joints within the ranges below (the analytic solver is only measured against them)"),
+    real!(ik => hip_flex_max_deg, "deg", 30.0, 150.0, "Hip flexion limit"),
+    real!(ik => hip_ext_max_deg, "deg", 0.0, 60.0, "Hip extension limit"),
+    real!(ik => hip_abd_max_deg, "deg", 0.0, 90.0, "Hip abduction limit"),
+    real!(ik => hip_add_max_deg, "deg", 0.0, 60.0, "Hip adduction limit"),
+    real!(ik => hip_int_rot_max_deg, "deg", 0.0, 90.0, "Hip internal rotation limit"),
+    real!(ik => hip_ext_rot_max_deg, "deg", 0.0, 90.0, "Hip external rotation limit"),
+    real!(ik => knee_flex_max_deg, "deg", 60.0, 170.0, "Knee flexion limit (the knee never hyperextends past straight)"),
+    real!(ik => soften, "", 0.5, 1.0, "Analytic: share of full reach past which the knee eases into extension instead of snapping straight (1: off)"),
+    real!(ik => twist_deg, "deg", -90.0, 90.0, "Analytic: extra turn of the knee about the hip-ankle line after the reference vector placed it"),
+    real!(ik => ccd_stiffness_hip, "", 0.01, 1.0, "CCD: share of each hip turn applied per iteration"),
+    real!(ik => ccd_stiffness_knee, "", 0.01, 1.0, "CCD: share of each knee turn applied per iteration"),
+    real!(ik => dls_damping_m, "m", 0.0, 1.0, "Jacobian: damping lambda of damped least squares"),
+    ParamSpec {
+        key: "ik.jacobian",
+        unit: "",
+        doc: "Jacobian update: dls (damped least squares), transpose or pseudo_inverse",
+        kind: Kind::Choice(JACOBIAN_VARIANTS),
+        get: |p| Value::Word(p.ik.jacobian.name()),
+        set: |p, v| {
+            if let Value::Word(w) = v {
+                p.ik.jacobian = JacobianVariant::from_name(w).unwrap_or(JacobianVariant::Dls);
+            }
+        },
+    },
+    real!(ik => gradient_delta0, "", 0.001, 100.0, "Gradient: starting step, the multiple of the gradient subtracted (seed 002: 5)"),
+    real!(ik => gradient_epsilon, "", 1e-8, 1.0, "Gradient: a descent ends when the halved step falls below this (seed 002: 0.0001)"),
+    int!(ik => gradient_restarts, u32, 0, 1000, "Gradient: random starting poses descended on the first frame, the best kept (seed 002: 100)"),
+    int!(ik => gradient_perturbations, u32, 0, 1000, "Gradient: random perturbations tried every frame, each kept only if it lowers the cost (seed 002: 100)"),
+    real!(ik => gradient_perturbation_deg, "deg", 0.0, 90.0, "Gradient: perturbation range, plus or minus, on every angle (seed 002: 15)"),
+    int!(ik => gradient_seed, u64, 0, 9_007_199_254_740_991, "Gradient: seed of the portable generator; the same seed gives the same poses every run"),
+    real!(ik => gradient_weight_swivel, "", 0.0, 1000.0, "Gradient: weight of the knee's squared swivel arc against the squared ankle error"),
+    int!(ik => gradient_max_steps, u32, 10, 1_000_000, "Gradient: most steps (kept or halved) of one descent"),
     ParamSpec {
         key: "optimiser.enabled",
         unit: "",

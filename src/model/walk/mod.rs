@@ -15,7 +15,7 @@ pub mod upper;
 use crate::model::body::{Bone, Pose, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::ik::solve_two_bone;
+use crate::model::ik::{IkAnswer, IkQuestion, LegSolver, TwoBoneSolution, solve_two_bone};
 use crate::model::optimise::{Candidate, StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
@@ -125,6 +125,8 @@ pub struct Walker {
     infeasible_steps: u64,
     cost_fixed_rule: bool,
     reach_failures: u64,
+    leg_solvers: [LegSolver; 2],
+    last_ik: [IkAnswer; 2],
     pelvis: PelvisPose,
     arm_hang: ArmHang,
     upper: UpperBody,
@@ -225,6 +227,7 @@ impl Walker {
             },
         ];
         let arm_hang = ArmHang::new(&dims, r.arm_spread, r.elbow_min_flex);
+        let (r_ik, r_thigh, r_shank) = (r.ik, dims.thigh, dims.shank);
         let mut walker = Walker {
             params: params.clone(),
             pose: Pose::rest(&dims),
@@ -245,6 +248,8 @@ impl Walker {
             infeasible_steps: 0,
             cost_fixed_rule: true,
             reach_failures: 0,
+            leg_solvers: Side::BOTH.map(|side| LegSolver::new(r_ik, r_thigh, r_shank, side.sign())),
+            last_ik: [IkAnswer::default(); 2],
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
             upper: UpperBody::default(),
@@ -341,7 +346,21 @@ impl Walker {
     fn evaluate_now(&mut self) {
         let pelvis = self.pelvis_at(self.phase);
         for side in Side::BOTH {
-            let pose = self.evaluate_leg(side, self.phase, &pelvis);
+            let pose = if self.r.ik.solver.is_iterative() {
+                let hip = pelvis.hip(side.sign());
+                let target = self.leg_target(side, self.phase, hip);
+                let answer = self.leg_solvers[side.index()].solve(&ik_question(hip, target, side));
+                self.last_ik[side.index()] = answer;
+                let axis = (answer.ankle - hip).normalize_or(DVec3::NEG_Y);
+                let swivel = crate::model::ik::orthogonal_part(axis, answer.knee - hip);
+                let solved =
+                    TwoBoneSolution { middle: answer.knee, end: answer.ankle, swivel, reached: answer.reached };
+                leg_pose(&self.r, hip, target, &solved)
+            } else {
+                let pose = self.evaluate_leg(side, self.phase, &pelvis);
+                self.last_ik[side.index()] = IkAnswer::exact(pose.knee, pose.ankle, pose.reached, pose.target.ankle);
+                pose
+            };
             if !pose.reached {
                 self.reach_failures += 1;
             }
@@ -933,6 +952,11 @@ impl Walker {
             }
         }
         self.arm_hang = ArmHang::new(&r.dims, r.arm_spread, r.elbow_min_flex);
+        if r.ik != self.r.ik {
+            for solver in &mut self.leg_solvers {
+                solver.set_settings(r.ik);
+            }
+        }
         self.design = design;
         self.r = r;
         self.params = params.clone();
@@ -1024,7 +1048,14 @@ impl Walker {
         self.infeasible_steps
     }
 
-    /// IK solves that had to clamp an unreachable target, counted over every evaluated frame.
+    /// The legs' last IK answers, right then left: error, iterations, whether reached.
+    #[must_use]
+    pub fn last_ik(&self) -> &[IkAnswer; 2] {
+        &self.last_ik
+    }
+
+    /// IK solves that had to clamp an unreachable target (or, with an iterative solver, ended
+    /// outside its tolerance), counted over every evaluated frame.
     #[must_use]
     pub fn reach_failures(&self) -> u64 {
         self.reach_failures
@@ -1163,6 +1194,21 @@ pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
     let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
     let reference = DVec3::new(cos_yaw, 0.0, -sin_yaw);
     let ik = solve_two_bone(hip, target.ankle, dims.thigh, dims.shank, reference);
+    leg_pose(r, hip, target, &ik)
+}
+
+/// The IK question the walk asks for a leg: hip, ankle target, and the knee toward the walking
+/// direction turned by the foot's yaw.
+#[must_use]
+pub fn ik_question(hip: DVec3, target: LegTarget, side: Side) -> IkQuestion {
+    let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
+    IkQuestion { hip, target: target.ankle, reference: DVec3::new(cos_yaw, 0.0, -sin_yaw), side_sign: side.sign() }
+}
+
+/// The whole leg from a solved hip–knee–ankle chain: foot and toes set to the target's angles.
+#[must_use]
+pub fn leg_pose(r: &Resolved, hip: DVec3, target: LegTarget, ik: &TwoBoneSolution) -> LegPose {
+    let dims = &r.dims;
     let foot = foot_rotation(target.yaw, target.pitch);
     // Flat-footed stance has no toe bend; skipping the rotation saves a sin/cos per solve.
     let toe = if target.toe_bend == 0.0 { foot } else { foot * DQuat::from_rotation_z(target.toe_bend) };

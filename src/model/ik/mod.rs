@@ -9,6 +9,53 @@
 
 use glam::DVec3;
 
+pub mod ccd;
+pub mod chain;
+pub mod fabrik;
+pub mod gradient;
+pub mod jacobian;
+pub mod solver;
+
+pub use chain::{IkQuestion, JointLimits, LegAngles, LegChain};
+pub use solver::{IkAnswer, IkSettings, IkSolverKind, JacobianVariant, LegSolver};
+
+/// What mature two-bone solvers (ozz-animation's `IKTwoBoneJob`, Godot's `TwoBoneIK3D`) add to
+/// the bare law-of-cosines solve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TwoBoneOptions {
+    /// Share of full reach (0..1] beyond which the chain eases into full extension instead of
+    /// snapping straight: past `soften × reach` the end falls ever further behind the target,
+    /// approaching full reach only asymptotically. 1 turns softening off.
+    pub soften: f64,
+    /// Extra turn of the middle joint about the root→end axis, after the reference vector has
+    /// placed it (rad, right-handed about the axis).
+    pub twist: f64,
+}
+
+impl Default for TwoBoneOptions {
+    fn default() -> Self {
+        TwoBoneOptions { soften: 1.0, twist: 0.0 }
+    }
+}
+
+/// The distance the chain actually reaches for a target at `distance`, after softening.
+///
+/// ozz's curve: with `da = soften·reach` and `ds = reach − da`, a target beyond `da` is pulled in
+/// to `da + ds·(1 − (4 / (α + 4))⁴)` with `α = (distance − da) / ds`: slope 1 where softening
+/// starts, concave, never reaching `reach`. (ozz writes 3 for the 4s; that curve starts with
+/// slope 4/3 and so puts the ankle past a target just beyond the softening point.)
+#[must_use]
+pub fn softened_distance(distance: f64, reach: f64, soften: f64) -> f64 {
+    let da = reach * soften.clamp(0.0, 1.0);
+    let ds = reach - da;
+    if distance <= da || ds <= 0.0 {
+        return distance;
+    }
+    let alpha = (distance - da) / ds;
+    let ratio = (4.0 / (alpha + 4.0)).powi(4);
+    da + ds * (1.0 - ratio)
+}
+
 /// The solved chain.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TwoBoneSolution {
@@ -47,11 +94,40 @@ pub fn orthogonal_part(a: DVec3, k: DVec3) -> DVec3 {
 /// ```
 #[must_use]
 pub fn solve_two_bone(root: DVec3, target: DVec3, l1: f64, l2: f64, reference: DVec3) -> TwoBoneSolution {
+    solve_two_bone_with(root, target, l1, l2, reference, TwoBoneOptions::default())
+}
+
+/// [`solve_two_bone`] with softening and twist.
+///
+/// A softened target counts as reached only when the chain ends on it, so `reached` is false
+/// wherever softening pulled the end in by more than a nanometre.
+///
+/// ```
+/// use gaitlab::model::ik::{solve_two_bone_with, TwoBoneOptions};
+/// use glam::DVec3;
+/// let opts = TwoBoneOptions { soften: 0.9, twist: 0.0 };
+/// // A target at exactly full reach: the softened leg stops short and keeps its knee bent.
+/// let s = solve_two_bone_with(DVec3::ZERO, DVec3::new(0.0, -0.86, 0.0), 0.43, 0.43, DVec3::X, opts);
+/// assert!(!s.reached);
+/// assert!(s.end.length() < 0.86 && s.middle.x > 0.0);
+/// ```
+#[must_use]
+pub fn solve_two_bone_with(
+    root: DVec3,
+    target: DVec3,
+    l1: f64,
+    l2: f64,
+    reference: DVec3,
+    options: TwoBoneOptions,
+) -> TwoBoneSolution {
     let offset = target - root;
     let d_raw = offset.length();
     let a = if d_raw > 1e-12 { offset / d_raw } else { DVec3::NEG_Y };
     let d_max = l1 + l2;
     let d_min = (l1 - l2).abs();
+    let d_soft = if options.soften < 1.0 { softened_distance(d_raw, d_max, options.soften) } else { d_raw };
+    let softened = d_raw - d_soft > 1e-9;
+    let d_raw = d_soft;
     let (d, reached) = if d_raw > d_max {
         (d_max, d_raw - d_max < 1e-9)
     } else if d_raw < d_min {
@@ -62,10 +138,13 @@ pub fn solve_two_bone(root: DVec3, target: DVec3, l1: f64, l2: f64, reference: D
     // Distance of the middle joint along the axis, and its radius about it.
     let along = if d > 1e-12 { (l1 * l1 - l2 * l2 + d * d) / (2.0 * d) } else { 0.0 };
     let radius = (l1 * l1 - along * along).max(0.0).sqrt();
-    let swivel = orthogonal_part(a, reference);
+    let mut swivel = orthogonal_part(a, reference);
+    if options.twist != 0.0 {
+        swivel = rotate_about(swivel, a, options.twist);
+    }
     let middle = root + a * along + swivel * radius;
     let end = root + a * d;
-    TwoBoneSolution { middle, end, swivel, reached }
+    TwoBoneSolution { middle, end, swivel, reached: reached && !softened }
 }
 
 /// The thesis's swivel angle [6.3.2, eq. on fig 6.12]: the angle θ by which to rotate the
@@ -138,6 +217,39 @@ mod tests {
             assert!((s.middle.distance(root) - 0.43).abs() < 1e-9);
             assert!((s.middle.distance(s.end) - 0.40).abs() < 1e-9);
         }
+    }
+
+    #[test]
+    fn softening_eases_into_full_reach_and_is_continuous() {
+        let reach = 0.86;
+        let mut previous = 0.0;
+        for i in 0..=400 {
+            let d = 0.5 + f64::from(i) * 0.002;
+            let s = softened_distance(d, reach, 0.9);
+            assert!(s <= d + 1e-15 && s < reach, "{d} -> {s}");
+            assert!(s >= previous, "monotone");
+            if d <= 0.9 * reach {
+                assert_eq!(s, d);
+            }
+            previous = s;
+        }
+        // Slope 1 where softening starts: no kink in the knee's motion.
+        let da = 0.9 * reach;
+        let slope = (softened_distance(da + 1e-6, reach, 0.9) - softened_distance(da, reach, 0.9)) / 1e-6;
+        assert!((slope - 1.0).abs() < 1e-4, "{slope}");
+        assert_eq!(softened_distance(2.0, reach, 1.0), 2.0);
+    }
+
+    #[test]
+    fn twist_turns_the_knee_about_the_axis_and_keeps_the_end() {
+        let root = DVec3::new(0.0, 0.9, 0.0);
+        let target = DVec3::new(0.1, 0.15, 0.05);
+        let plain = solve_two_bone(root, target, 0.43, 0.44, DVec3::X);
+        let turned =
+            solve_two_bone_with(root, target, 0.43, 0.44, DVec3::X, TwoBoneOptions { soften: 1.0, twist: 0.3 });
+        assert!(turned.reached);
+        assert!(turned.end.distance(plain.end) < 1e-12);
+        assert!((plain.swivel.angle_between(turned.swivel) - 0.3).abs() < 1e-9);
     }
 
     #[test]

@@ -1,0 +1,212 @@
+//! `gaitlab ik`: every IK solver on the walk's own targets, side by side.
+
+use super::{ExitCode, load_config};
+use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
+use crate::model::ik::{IkSettings, IkSolverKind};
+use serde_json::json;
+use std::io::{self, Write};
+use std::path::Path;
+
+/// The solvers named in `list` (comma-separated), or a message naming the valid ones.
+pub fn parse_solvers(list: &str) -> Result<Vec<IkSolverKind>, String> {
+    let mut solvers = Vec::new();
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let Some(kind) = IkSolverKind::from_name(name) else {
+            let valid: Vec<&str> = IkSolverKind::ALL.iter().map(|k| k.name()).collect();
+            return Err(format!("unknown solver `{name}`; valid: {}", valid.join(", ")));
+        };
+        if !solvers.contains(&kind) {
+            solvers.push(kind);
+        }
+    }
+    if solvers.is_empty() {
+        return Err("--solvers names no solver".to_string());
+    }
+    Ok(solvers)
+}
+
+pub(super) fn run(
+    path: &Path,
+    solvers: Option<&str>,
+    cycles: Option<u32>,
+    fps: Option<f64>,
+    json: bool,
+    sets: &[String],
+) -> ExitCode {
+    let params = match load_config(path, sets) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let solvers = match solvers.map_or_else(|| Ok(IkSolverKind::ALL.to_vec()), parse_solvers) {
+        Ok(s) => s,
+        Err(message) => {
+            eprintln!("gaitlab ik: {message}");
+            return 2;
+        }
+    };
+    let cycles = cycles.unwrap_or(params.sim.cycles);
+    if cycles == 0 || cycles > 10_000 {
+        eprintln!("gaitlab ik: --cycles {cycles} is out of range; valid: 1 to 10000");
+        return 2;
+    }
+    let fps = fps.unwrap_or(params.sim.fps);
+    if !(10.0..=1000.0).contains(&fps) {
+        eprintln!("gaitlab ik: --fps {fps} is out of range; valid: 10 to 1000");
+        return 2;
+    }
+    let targets = match collect_targets(&params, f64::from(cycles), fps) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("{}: {e}", path.display());
+            return 2;
+        }
+    };
+    let r = params.resolve();
+    let rows: Vec<(IkSolverKind, IkSummary)> = solvers
+        .iter()
+        .map(|&solver| (solver, run_solver(&targets, solver, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets)))
+        .collect();
+    let stdout = io::stdout();
+    let mut out = io::BufWriter::new(stdout.lock());
+    let written = if json {
+        write_json(&mut out, &rows)
+    } else {
+        write_tables(&mut out, path, &r.ik, targets.len(), cycles, fps, &rows)
+    };
+    match written.and_then(|()| out.flush()) {
+        Ok(()) => 0,
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => 0,
+        Err(e) => {
+            eprintln!("gaitlab ik: cannot write to stdout: {e}");
+            1
+        }
+    }
+}
+
+/// What a solver's own settings are, in one line.
+fn settings_line(solver: IkSolverKind, s: &IkSettings) -> String {
+    let limits = if s.limits.enabled { "limits on" } else { "limits off" };
+    let tol = format!("tolerance {:.3} mm, at most {} iterations, {limits}", s.tolerance * 1e3, s.max_iterations);
+    match solver {
+        IkSolverKind::Analytic => {
+            format!(
+                "exact; soften {:.2}, twist {:.1} deg; limits measured, not enforced",
+                s.soften,
+                s.twist.to_degrees()
+            )
+        }
+        IkSolverKind::Ccd => {
+            format!("stiffness hip {:.2} knee {:.2}; {tol}", s.ccd_stiffness_hip, s.ccd_stiffness_knee)
+        }
+        IkSolverKind::Fabrik => tol,
+        IkSolverKind::JacobianDls => format!("{} (damping {} m); {tol}", s.jacobian_variant.name(), s.dls_damping),
+        IkSolverKind::Gradient => {
+            let g = &s.gradient;
+            format!(
+                "delta0 {} down to {}, {} restarts, {} perturbations of {:.0} deg a frame, seed {}; tolerance {:.3} mm, {limits}",
+                g.delta0,
+                g.epsilon,
+                g.restarts,
+                g.perturbations,
+                g.perturbation.to_degrees(),
+                g.seed,
+                s.tolerance * 1e3
+            )
+        }
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn write_tables(
+    out: &mut impl Write,
+    path: &Path,
+    settings: &IkSettings,
+    solves: usize,
+    cycles: u32,
+    fps: f64,
+    rows: &[(IkSolverKind, IkSummary)],
+) -> io::Result<()> {
+    writeln!(
+        out,
+        "# {}: {} IK targets ({} cycles at {} fps, both legs); the walk uses {}",
+        path.display(),
+        solves,
+        cycles,
+        fps,
+        settings.solver.name()
+    )?;
+    for (solver, s) in rows {
+        writeln!(out)?;
+        writeln!(out, "{}: {}", solver.name(), settings_line(*solver, settings))?;
+        writeln!(out, "  {:<28}{:>10}   (reached {}, missed {})", "solves", s.solves, s.reached, s.solves - s.reached)?;
+        writeln!(
+            out,
+            "  {:<28}max {:>10.4}   mean {:>10.4}",
+            "position error (mm)", s.position_error_max_mm, s.position_error_mean_mm
+        )?;
+        writeln!(
+            out,
+            "  {:<28}max {:>10.4}   mean {:>10.4}",
+            "knee direction error (deg)", s.knee_direction_error_max_deg, s.knee_direction_error_mean_deg
+        )?;
+        writeln!(out, "  {:<28}max {:>10}   mean {:>10.2}", "iterations", s.iterations_max, s.iterations_mean)?;
+        writeln!(out, "  {:<28}mean {:>9.2}", "time per solve (us)", s.time_per_solve_us)?;
+        writeln!(out, "  {:<28}{:>10}", "joint-limit violations", s.limit_violations)?;
+        writeln!(
+            out,
+            "  {:<28}max {:>10.2}   mean {:>10.2}   worst at frame {}",
+            "knee jump (mm)", s.knee_jump_max_mm, s.knee_jump_mean_mm, s.knee_jump_max_frame
+        )?;
+        writeln!(
+            out,
+            "  {:<28}max {:>10.2}   mean {:>10.2}   worst at frame {}",
+            "ankle jump (mm)", s.ankle_jump_max_mm, s.ankle_jump_mean_mm, s.ankle_jump_max_frame
+        )?;
+    }
+    writeln!(out)?;
+    writeln!(
+        out,
+        "{:<13} {:>8} {:>12} {:>12} {:>10} {:>10} {:>8}",
+        "solver", "reached", "err max mm", "knee max deg", "iter mean", "us/solve", "limits"
+    )?;
+    for (solver, s) in rows {
+        writeln!(
+            out,
+            "{:<13} {:>8} {:>12.4} {:>12.4} {:>10.2} {:>10.2} {:>8}",
+            solver.name(),
+            format!("{}/{}", s.reached, s.solves),
+            s.position_error_max_mm,
+            s.knee_direction_error_max_deg,
+            s.iterations_mean,
+            s.time_per_solve_us,
+            s.limit_violations
+        )?;
+    }
+    Ok(())
+}
+
+fn write_json(out: &mut impl Write, rows: &[(IkSolverKind, IkSummary)]) -> io::Result<()> {
+    for (solver, s) in rows {
+        let line = json!({
+            "solver": solver.name(),
+            "solves": s.solves,
+            "reached": s.reached,
+            "position_error_max_mm": s.position_error_max_mm,
+            "position_error_mean_mm": s.position_error_mean_mm,
+            "knee_direction_error_max_deg": s.knee_direction_error_max_deg,
+            "knee_direction_error_mean_deg": s.knee_direction_error_mean_deg,
+            "iterations_mean": s.iterations_mean,
+            "iterations_max": s.iterations_max,
+            "time_per_solve_us": s.time_per_solve_us,
+            "limit_violations": s.limit_violations,
+            "knee_jump_max_mm": s.knee_jump_max_mm,
+            "knee_jump_max_frame": s.knee_jump_max_frame,
+            "knee_jump_mean_mm": s.knee_jump_mean_mm,
+            "ankle_jump_max_mm": s.ankle_jump_max_mm,
+            "ankle_jump_max_frame": s.ankle_jump_max_frame,
+            "ankle_jump_mean_mm": s.ankle_jump_mean_mm,
+        });
+        writeln!(out, "{line}")?;
+    }
+    Ok(())
+}
