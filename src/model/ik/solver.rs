@@ -348,6 +348,15 @@ impl LegSolver {
                 let previous = self.warm.map_or(0.0, |w| w.hip_rot);
                 (chain.angles_from_positions(pose, side, previous), 1)
             }
+            _ if target.length() >= chain.reach() => {
+                // Beyond reach every solver would only creep up on the straight-knee
+                // singularity; like the analytic solver (and FABRIK's own first test), answer
+                // with the leg stretched straight toward the target.
+                let dir = target.normalize();
+                let straight = ChainPose { knee: dir * chain.thigh, ankle: dir * chain.reach() };
+                let previous = self.warm.map_or(0.0, |w| w.hip_rot);
+                (chain.limits.clamp(chain.angles_from_positions(straight, side, previous)), 0)
+            }
             kind => {
                 let start = self.warm.unwrap_or_else(LegAngles::rest);
                 let start = chain.limits.clamp(start);
