@@ -262,3 +262,68 @@ fn optimise_with_the_optimiser_off_and_with_bad_input() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("no/such/config.toml"));
 }
+
+#[test]
+fn ik_prints_a_table_per_solver_and_json_lines_and_names_bad_solvers() {
+    let out = gaitlab(&["ik", &config_path("default"), "--cycles", "1", "--solvers", "analytic,jacobian_dls,fabrik"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let table = text(&out.stdout);
+    for part in [
+        "analytic: exact",
+        "jacobian_dls: dls (damping 0.02 m)",
+        "fabrik: tolerance 0.100 mm",
+        "position error (mm)",
+        "knee direction error (deg)",
+        "iterations",
+        "time per solve (us)",
+        "joint-limit violations",
+        "knee jump (mm)",
+        "ankle jump (mm)",
+        "worst at frame",
+    ] {
+        assert!(table.contains(part), "{part} missing:\n{table}");
+    }
+    assert!(!table.contains("ccd:") && !table.contains("gradient:"), "only the solvers asked for:\n{table}");
+    // The side-by-side lines: every target reached by each solver.
+    let solves: Vec<&str> =
+        table.lines().filter(|l| l.starts_with("jacobian_dls ") || l.starts_with("fabrik ")).collect();
+    assert_eq!(solves.len(), 2, "{table}");
+    for line in solves {
+        let reached = line.split_whitespace().nth(1).unwrap();
+        let (a, b) = reached.split_once('/').unwrap();
+        assert_eq!(a, b, "{line}");
+    }
+
+    let out = gaitlab(&[
+        "ik",
+        &config_path("stairs_down"),
+        "--cycles",
+        "1",
+        "--json",
+        "--solvers",
+        "ccd",
+        "--set",
+        "ik.limits=false",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let lines: Vec<serde_json::Value> = text(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 1);
+    assert_eq!(lines[0]["solver"], "ccd");
+    assert_eq!(lines[0]["reached"], lines[0]["solves"]);
+    assert!(lines[0]["position_error_max_mm"].as_f64().unwrap() <= 0.1 + 1e-9);
+    assert!(lines[0]["knee_direction_error_max_deg"].as_f64().unwrap() < 1.0);
+
+    let out = gaitlab(&["ik", &config_path("default"), "--solvers", "ccd,newton"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("unknown solver `newton`") && err.contains("analytic, ccd, fabrik, jacobian_dls, gradient"),
+        "{err}"
+    );
+    let out = gaitlab(&["ik", &config_path("default"), "--cycles", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("valid: 1 to 10000"));
+    let out = gaitlab(&["ik", &config_path("default"), "--set", "ik.solver=\"newton\""]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("ik.solver"), "{}", text(&out.stderr));
+}

@@ -79,6 +79,7 @@ fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
             "pelvis" | "joints" => "% of gait cycle",
             "swing_foot" | "ankle" => "% of swing",
             "stick_figure" => "forward x (m)",
+            "ik" => "iterations (log scale)",
             _ => "step",
         };
         assert!(words.contains(axis), "{svg} lacks the axis label `{axis}`");
@@ -92,6 +93,11 @@ fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
     assert!(joints.lines().next().unwrap().ends_with("terrain_y_under_heel_r,terrain_y_under_heel_l"));
     assert_eq!(read(&a, "footfalls.csv").lines().next().unwrap(), "step,side,x,y,z,terrain_y,stride_m");
     assert_eq!(read(&a, "optimisation.csv").lines().next().unwrap(), "step,candidate,pelvis_x,cost,feasible,chosen");
+    // The walk's own solver (analytic) alone: two rows a frame, each exact.
+    let ik = read(&a, "ik.csv");
+    let frames = joints.lines().count() - 1;
+    assert_eq!(ik.lines().count() - 1, 2 * frames);
+    assert!(ik.lines().skip(1).all(|l| l.contains(",analytic,0.000000,") && l.contains(",1,true,")), "{}", &ik[..400]);
     // One chosen candidate a step.
     let opt = read(&a, "optimisation.csv");
     let steps: std::collections::BTreeSet<&str> = opt.lines().skip(1).map(|l| l.split(',').next().unwrap()).collect();
@@ -294,4 +300,45 @@ fn a_comparison_report_names_both_walks_in_legends_and_columns() {
     let json: serde_json::Value = serde_json::from_str(&read(&dir, "summary.json")).unwrap();
     assert!((json["speed_mps"].as_f64().unwrap() - 1.3).abs() < 0.01);
     std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn ik_solvers_are_measured_side_by_side_in_the_report() {
+    let dir = temp("ik");
+    let out = gaitlab(&[
+        "report",
+        "configs/stairs_up.toml",
+        "--out",
+        dir.to_str().unwrap(),
+        "--cycles",
+        "3",
+        "--ik-solvers",
+        "jacobian_dls,fabrik",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let ik = read(&dir, "ik.csv");
+    assert_eq!(
+        ik.lines().next().unwrap(),
+        "frame,time_s,side,solver,position_error_mm,knee_direction_error_deg,iterations,reached,limit_excess_deg,knee_jump_mm,ankle_jump_mm"
+    );
+    let rows: Vec<Vec<&str>> = ik.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let per_solver = |name: &str| rows.iter().filter(|r| r[3] == name).count();
+    assert!(per_solver("jacobian_dls") > 300);
+    assert_eq!(per_solver("jacobian_dls"), per_solver("fabrik"));
+    assert_eq!(per_solver("jacobian_dls") + per_solver("fabrik"), rows.len());
+    for r in &rows {
+        let error_mm: f64 = r[4].parse().unwrap();
+        assert!(error_mm <= 0.1 + 1e-9 && r[7] == "true", "{r:?}");
+        assert!(r[6].parse::<u32>().unwrap() < 5000);
+    }
+    let md = read(&dir, "summary.md");
+    assert!(md.contains("| jacobian_dls | ") && md.contains("| fabrik | "), "{md}");
+    let svg = read(&dir, "plots/ik.svg");
+    assert!(svg.contains("jacobian_dls") && svg.contains("fabrik") && svg.contains("error (mm)"));
+
+    let out =
+        gaitlab(&["report", "configs/default.toml", "--out", dir.to_str().unwrap(), "--ik-solvers", "ccd,newton"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("unknown solver `newton`") && err.contains("jacobian_dls"), "{err}");
 }

@@ -353,3 +353,28 @@ fn export_writes_a_report_of_the_edited_parameters_in_the_background() {
     assert!(saved.contains("speed_mps = 1.4"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_ik_solver_switches_live_from_a_key_and_the_walk_shows_its_error_and_iterations() {
+    let mut app = walked(None, 30);
+    assert!(screen(&app, 100, 30).contains("IK analytic R 0µm 1it L 0µm 1it"));
+    key(&mut app, KeyCode::Char('i'));
+    assert_eq!(app.params.ik.solver.name(), "ccd");
+    let time_before = app.walker.time_s();
+    for _ in 0..20 {
+        app.tick(1.0 / 60.0);
+    }
+    assert!(app.walker.time_s() > time_before, "the walk goes on without a restart");
+    let ik = *app.walker.last_ik();
+    assert!(ik.iter().all(|a| a.reached && a.position_error <= 1e-4 && a.iterations >= 1), "{ik:?}");
+    let text = screen(&app, 100, 30);
+    let expected = format!("IK ccd R {:.0}µm {}it", ik[0].position_error * 1e6, ik[0].iterations);
+    assert!(text.contains(&expected), "{expected} missing:\n{text}");
+    // Three more presses come round to the seed-002 gradient solver; undo goes back.
+    keys(&mut app, "iii");
+    assert_eq!(app.params.ik.solver.name(), "gradient");
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.params.ik.solver.name(), "jacobian_dls");
+    app.tick(1.0 / 60.0);
+    assert!(screen(&app, 100, 30).contains("IK jacobian_dls"));
+}

@@ -106,6 +106,9 @@ pub enum Command {
         /// Overlay another config's walk in the plots and put its figures beside (repeatable)
         #[arg(long)]
         compare: Vec<PathBuf>,
+        /// IK solvers for ik.csv and the ik plot, comma-separated [default: the walk's ik.solver, with analytic beside it]
+        #[arg(long, value_name = "LIST")]
+        ik_solvers: Option<String>,
         /// Override a key: --set walk.speed_mps=1.4 (repeatable)
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
@@ -165,8 +168,8 @@ pub fn run(cli: Cli) -> ExitCode {
             simulate(&config, cycles, fps, out.as_deref(), &sets)
         }
         Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
-        Some(Command::Report { config, out, cycles, compare, sets }) => {
-            report(&config, out.as_deref(), cycles, &compare, &sets)
+        Some(Command::Report { config, out, cycles, compare, ik_solvers, sets }) => {
+            report(&config, out.as_deref(), cycles, &compare, ik_solvers.as_deref(), &sets)
         }
         Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
             ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets)
@@ -190,11 +193,25 @@ fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
     crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker })
 }
 
-fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathBuf], sets: &[String]) -> ExitCode {
+fn report(
+    path: &Path,
+    out: Option<&Path>,
+    cycles: Option<u32>,
+    compare: &[PathBuf],
+    ik_solvers: Option<&str>,
+    sets: &[String],
+) -> ExitCode {
     use std::io::IsTerminal;
     let params = match load_config(path, sets) {
         Ok(p) => p,
         Err(code) => return code,
+    };
+    let ik_solvers = match ik_solvers.map(ik::parse_solvers).transpose() {
+        Ok(list) => list.unwrap_or_default(),
+        Err(message) => {
+            eprintln!("gaitlab report: --ik-solvers: {message}");
+            return 2;
+        }
     };
     let cycles = cycles.unwrap_or(params.sim.cycles);
     if !(3..=100_000).contains(&cycles) {
@@ -225,6 +242,7 @@ fn report(path: &Path, out: Option<&Path>, cycles: Option<u32>, compare: &[PathB
         cycles,
         fps: params.sim.fps,
         compare: others,
+        ik_solvers,
     };
     let tty = io::stderr().is_terminal();
     let mut progress = |stage: &str| {

@@ -6,9 +6,11 @@
 pub mod metrics;
 pub mod plots;
 
+use crate::analysis::ik::{self, IkSummary, IkTarget, SolverRun};
 use crate::analysis::{self, Run};
 use crate::config::{self, render::toml_number, schema::PARAMS};
 use crate::model::body::Side;
+use crate::model::ik::IkSolverKind;
 use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
 use crate::model::walk::Walker;
@@ -33,11 +35,34 @@ pub struct ReportInput<'a> {
     pub fps: f64,
     /// Other walks to compare with (`--compare`): name and parameters.
     pub compare: Vec<(String, WalkParams)>,
+    /// IK solvers measured on the walk's targets for `ik.csv` and the `ik` plot; empty means
+    /// the walk's own solver, with the analytic reference beside it when that is another.
+    pub ik_solvers: Vec<IkSolverKind>,
+}
+
+impl ReportInput<'_> {
+    /// The IK solvers the report measures.
+    #[must_use]
+    pub fn ik_solvers(&self) -> Vec<IkSolverKind> {
+        if !self.ik_solvers.is_empty() {
+            return self.ik_solvers.clone();
+        }
+        let own = self.params.ik.solver;
+        if own == IkSolverKind::Analytic { vec![own] } else { vec![IkSolverKind::Analytic, own] }
+    }
 }
 
 /// Files of the report folder, relative to it.
-pub const FILES: &[&str] =
-    &["summary.md", "summary.json", "config.toml", "joints.csv", "footfalls.csv", "optimisation.csv", "walk.bvh"];
+pub const FILES: &[&str] = &[
+    "summary.md",
+    "summary.json",
+    "config.toml",
+    "joints.csv",
+    "footfalls.csv",
+    "optimisation.csv",
+    "ik.csv",
+    "walk.bvh",
+];
 
 /// Writes the report into `out` (replacing a previous one only once the new one is whole).
 /// `progress` receives a line per stage.
@@ -52,6 +77,18 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         let summary = metrics::summarise(&run).map_err(|e| format!("{name}: {e}"))?;
         others.push((name.clone(), params, run, summary));
     }
+    let solvers = input.ik_solvers();
+    progress(&format!(
+        "solving the walk's IK targets with {}",
+        solvers.iter().map(|s| s.name()).collect::<Vec<_>>().join(", ")
+    ));
+    let ik_targets =
+        ik::collect_targets(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
+    let resolved = input.params.resolve();
+    let ik_runs: Vec<SolverRun> = solvers
+        .iter()
+        .map(|&solver| ik::run_solver(&ik_targets, solver, &resolved.ik, resolved.dims.thigh, resolved.dims.shank))
+        .collect();
     let terrain = Walker::new(input.params).map_err(|e| e.to_string())?.terrain().clone();
     let parent = out.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
@@ -68,6 +105,7 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
         write("footfalls.csv", &footfalls_csv(&run, &terrain))?;
         write("optimisation.csv", &optimisation_csv(&run))?;
+        write("ik.csv", &ik_csv(&ik_targets, &ik_runs))?;
         progress("writing walk.bvh");
         write_bvh(&file("walk.bvh"), input.params, &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
         progress("drawing plots");
@@ -76,12 +114,15 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         let mut walks = vec![plots::Walk { name: input.name.clone(), run: &run, params: input.params }];
         walks.extend(others.iter().map(|(name, params, run, _)| plots::Walk { name: name.clone(), run, params }));
         plots::write_plots(&plots, &walks)?;
+        plots::write_ik_plot(&plots, &ik_targets, &ik_runs)?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
         write("summary.json", &format!("{json}\n"))?;
         write("config.toml", &config_text(input)?)?;
         let compared: Vec<(&str, &Summary)> = others.iter().map(|(n, _, _, s)| (n.as_str(), s)).collect();
-        write("summary.md", &summary_md(input, &summary, &compared))?;
+        let ik_summaries: Vec<(IkSolverKind, IkSummary)> =
+            ik_runs.iter().map(|run| (run.solver, run.summary(&ik_targets))).collect();
+        write("summary.md", &summary_md(input, &summary, &compared, &ik_summaries))?;
         Ok(())
     })();
     if let Err(e) = result {
@@ -147,6 +188,35 @@ fn footfalls_csv(run: &Run, terrain: &Terrain) -> String {
     s
 }
 
+/// `ik.csv`: one row per solver, frame and leg. Times per solve are left out: they differ
+/// between runs, and the table must not.
+fn ik_csv(targets: &[IkTarget], runs: &[SolverRun]) -> String {
+    let mut out = String::from(
+        "frame,time_s,side,solver,position_error_mm,knee_direction_error_deg,iterations,reached,limit_excess_deg,knee_jump_mm,ankle_jump_mm\n",
+    );
+    for run in runs {
+        for (t, x) in targets.iter().zip(&run.samples) {
+            let direction = x.knee_direction_error_deg.map_or(String::new(), |d| format!("{d:.4}"));
+            let _ = writeln!(
+                out,
+                "{},{:.4},{},{},{:.6},{},{},{},{:.4},{:.3},{:.3}",
+                t.frame,
+                t.time_s,
+                if t.side == Side::Right { "right" } else { "left" },
+                run.solver.name(),
+                x.answer.position_error * 1e3,
+                direction,
+                x.answer.iterations,
+                x.answer.reached,
+                x.limit_excess_deg,
+                x.knee_jump_mm,
+                x.ankle_jump_mm
+            );
+        }
+    }
+    out
+}
+
 fn optimisation_csv(run: &Run) -> String {
     let mut s = String::from("step,candidate,pelvis_x,cost,feasible,chosen\n");
     for plan in &run.step_plans {
@@ -174,7 +244,12 @@ fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
     config::edit::edited_text(input.source_text, input.params, &changed)
 }
 
-fn summary_md(input: &ReportInput<'_>, s: &Summary, others: &[(&str, &Summary)]) -> String {
+fn summary_md(
+    input: &ReportInput<'_>,
+    s: &Summary,
+    others: &[(&str, &Summary)],
+    ik_rows: &[(IkSolverKind, IkSummary)],
+) -> String {
     let values: Vec<serde_json::Value> = std::iter::once(s)
         .chain(others.iter().map(|(_, o)| *o))
         .map(|x| serde_json::to_value(x).expect("plain numbers"))
@@ -219,13 +294,37 @@ fn summary_md(input: &ReportInput<'_>, s: &Summary, others: &[(&str, &Summary)])
             .collect();
         let _ = writeln!(md, "| {label} (`{key}`) | {} | {unit} |", cells.join(" | "));
     }
+    let _ = write!(
+        md,
+        "\n## Leg IK\n\nThe walk places its legs with `{}`. Solvers on the walk's {} IK targets \
+         (both legs, every frame; definitions in `src/analysis/ik.rs`; timings: `gaitlab ik`):\n\n\
+         | solver | reached | position error max (mm) | knee direction error max (deg) | iterations mean | iterations max | joint-limit violations |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
+        input.params.ik.solver.name(),
+        ik_rows.first().map_or(0, |(_, r)| r.solves)
+    );
+    for (solver, r) in ik_rows {
+        let _ = writeln!(
+            md,
+            "| {} | {}/{} | {:.4} | {:.4} | {:.2} | {} | {} |",
+            solver.name(),
+            r.reached,
+            r.solves,
+            r.position_error_max_mm,
+            r.knee_direction_error_max_deg,
+            r.iterations_mean,
+            r.iterations_max,
+            r.limit_violations
+        );
+    }
     md.push_str("\n## Plots\n\n");
     for plot in plots::PLOTS {
         let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
     }
     md.push_str(
         "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \
-         [optimisation.csv](optimisation.csv) (every candidate of every step). Definitions of the \
+         [optimisation.csv](optimisation.csv) (every candidate of every step), [ik.csv](ik.csv) (every IK \
+         solve of every solver above). Definitions of the \
          figures: `src/report/metrics.rs`.\n",
     );
     md

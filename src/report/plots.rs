@@ -7,6 +7,7 @@
 //! (LHS), left toe-off (LTO).
 
 use crate::analysis::Run;
+use crate::analysis::ik::{IkSample, IkTarget, SolverRun};
 use crate::model::body::{Bone, Side};
 use crate::model::gait_curves::CurveName;
 use crate::model::params::WalkParams;
@@ -22,7 +23,7 @@ use std::sync::Once;
 pub const SIZE: (u32, u32) = (1600, 1000);
 
 /// Plot names, each written as `plots/<name>.png` and `plots/<name>.svg`.
-pub const PLOTS: &[&str] = &["pelvis", "swing_foot", "ankle", "joints", "stick_figure", "optimisation"];
+pub const PLOTS: &[&str] = &["pelvis", "swing_foot", "ankle", "joints", "stick_figure", "optimisation", "ik"];
 
 const FONT: &str = "sans-serif";
 static REGISTER_FONT: Once = Once::new();
@@ -650,6 +651,76 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
     root.present().map_err(err)
 }
 
+/// Per frame, the worse of the two legs' values.
+fn per_frame(targets: &[IkTarget], run: &SolverRun, value: impl Fn(&IkSample) -> f64) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    for (t, x) in targets.iter().zip(&run.samples) {
+        let v = value(x);
+        match out.last_mut() {
+            Some(last) if last.0 == t.time_s => last.1 = last.1.max(v),
+            _ => out.push((t.time_s, v)),
+        }
+    }
+    out
+}
+
+fn ik<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, targets: &[IkTarget], runs: &[SolverRun]) -> Res {
+    root.fill(&WHITE).map_err(err)?;
+    let root = root.titled("Leg IK on the walk's targets (worse leg per frame)", (FONT, 34)).map_err(err)?;
+    let (top, bottom) = root.split_vertically((SIZE.1 - 50) / 2);
+    let t_end = targets.last().map_or(1.0, |t| t.time_s).max(1e-3);
+    let errors: Vec<Vec<(f64, f64)>> =
+        runs.iter().map(|r| per_frame(targets, r, |x| x.answer.position_error * 1e3)).collect();
+    let iterations: Vec<Vec<(f64, f64)>> =
+        runs.iter().map(|r| per_frame(targets, r, |x| f64::from(x.answer.iterations.max(1)))).collect();
+    // Headroom above the data for the legend.
+    let error_max = errors.iter().flatten().map(|p| p.1).fold(0.0, f64::max).max(1e-3) * 1.5;
+    let iteration_max = iterations.iter().flatten().map(|p| p.1).fold(1.0, f64::max) * 8.0;
+    for (area, caption, y_desc, series, log) in [
+        (&top, "ankle position error", "error (mm)", &errors, false),
+        (&bottom, "iterations per solve", "iterations (log scale)", &iterations, true),
+    ] {
+        let mut builder = ChartBuilder::on(area);
+        builder.caption(caption, (FONT, 28)).margin(12).x_label_area_size(50).y_label_area_size(90);
+        macro_rules! draw {
+            ($chart:expr) => {{
+                let mut chart = $chart;
+                chart
+                    .configure_mesh()
+                    .x_desc("time (s)")
+                    .y_desc(y_desc)
+                    .y_label_formatter(&|v| if log { format!("{v:.0}") } else { format!("{v:.3}") })
+                    .label_style((FONT, 18))
+                    .axis_desc_style((FONT, 20))
+                    .draw()
+                    .map_err(err)?;
+                for (i, (run, points)) in runs.iter().zip(series.iter()).enumerate() {
+                    let colour = PALETTE[i % PALETTE.len()];
+                    chart
+                        .draw_series(LineSeries::new(points.iter().copied(), colour.stroke_width(2)))
+                        .map_err(err)?
+                        .label(run.solver.name())
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(3)));
+                }
+                chart
+                    .configure_series_labels()
+                    .label_font((FONT, 18))
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .position(SeriesLabelPosition::UpperRight)
+                    .draw()
+                    .map_err(err)?;
+            }};
+        }
+        if log {
+            draw!(builder.build_cartesian_2d(0f64..t_end, (1f64..iteration_max).log_scale()).map_err(err)?);
+        } else {
+            draw!(builder.build_cartesian_2d(0f64..t_end, 0f64..error_max).map_err(err)?);
+        }
+    }
+    root.present().map_err(err)
+}
+
 macro_rules! both {
     ($dir:expr, $name:expr, $f:ident $(, $arg:expr)*) => {{
         let png = $dir.join(format!("{}.png", $name));
@@ -682,5 +753,12 @@ pub fn write_plots(dir: &Path, walks: &[Walk<'_>]) -> Res {
     both!(dir, "joints", joints, &all);
     both!(dir, "stick_figure", stick_figure, d);
     both!(dir, "optimisation", optimisation, d);
+    Ok(())
+}
+
+/// Writes `ik.png` and `ik.svg` into `dir`: each solver's error and iterations per frame.
+pub fn write_ik_plot(dir: &Path, targets: &[IkTarget], runs: &[SolverRun]) -> Res {
+    register_font();
+    both!(dir, "ik", ik, targets, runs);
     Ok(())
 }

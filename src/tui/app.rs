@@ -6,6 +6,7 @@ use super::save;
 use crate::config::render::{derived_value, toml_number};
 use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
 use crate::config::{self, Loader, presets};
+use crate::model::ik::IkSolverKind;
 use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::Walker;
@@ -451,6 +452,12 @@ impl App {
                 self.set_value(spec, &Value::Word(next.name()));
                 self.rerun_optimiser();
             }
+            Action::NextSolver => {
+                let i = IkSolverKind::ALL.iter().position(|k| *k == self.params.ik.solver).unwrap_or(0);
+                let next = IkSolverKind::ALL[(i + 1) % IkSolverKind::ALL.len()];
+                let spec = config::schema::spec("ik.solver").expect("a key");
+                self.set_value(spec, &Value::Word(next.name()));
+            }
         }
     }
 
@@ -656,6 +663,7 @@ impl App {
                 cycles,
                 fps: params.sim.fps,
                 compare: Vec::new(),
+                ik_solvers: Vec::new(),
             };
             let progress_tx = tx.clone();
             let mut progress = |stage: &str| {

@@ -65,13 +65,15 @@ pub enum Action {
     RerunOptimiser,
     /// Next optimiser method.
     NextMethod,
+    /// Next leg IK solver.
+    NextSolver,
     /// Write a report of the current parameters (in the background).
     Export,
 }
 
 impl Action {
     /// Every action, in the order of its `[keys]` name table.
-    pub const ALL: [Action; 31] = [
+    pub const ALL: [Action; 32] = [
         Action::Quit,
         Action::Help,
         Action::Pause,
@@ -102,6 +104,7 @@ impl Action {
         Action::NextPanel,
         Action::RerunOptimiser,
         Action::NextMethod,
+        Action::NextSolver,
         Action::Export,
     ];
 
@@ -139,6 +142,7 @@ impl Action {
             Action::NextPanel => "next_panel",
             Action::RerunOptimiser => "rerun_optimiser",
             Action::NextMethod => "next_method",
+            Action::NextSolver => "next_ik_solver",
             Action::Export => "export",
         }
     }
@@ -183,6 +187,7 @@ pub const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("tab", Action::NextPanel),
     ("o", Action::RerunOptimiser),
     ("m", Action::NextMethod),
+    ("i", Action::NextSolver),
     ("e", Action::Export),
 ];
 
@@ -207,8 +212,8 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::NextCurve, Action::PrevCurve], "next / previous curve"),
     (&[Action::ToggleGrid], "one curve / grid of curves"),
     (&[Action::NextPanel], "next panel (small screens)"),
-    (&[Action::RerunOptimiser], "re-run the optimiser on the last step"),
-    (&[Action::NextMethod], "next optimiser method"),
+    (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
+    (&[Action::NextSolver], "next leg IK solver (the walk switches live)"),
     (&[Action::Export], "export a report of these parameters"),
 ];
 

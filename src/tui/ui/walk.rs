@@ -22,7 +22,7 @@ pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let block = Block::bordered().title(format!(" Walk: {view} view (v) ")).title_bottom(legend());
     let inner = block.inner(area);
     f.render_widget(block, area);
-    let [canvas_area, info_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(2)]).areas(inner);
+    let [canvas_area, info_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
     draw_canvas(f, canvas_area, app, marker);
     let fr = &app.frame;
     let leg = |s: Side| {
@@ -42,8 +42,33 @@ pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
             fr.pelvis.x,
             app.walker.footfalls().last().map_or(0, |f| f.step)
         )),
+        ik_line(app),
     ];
     f.render_widget(Paragraph::new(info), info_area);
+}
+
+/// The legs' IK this frame: solver, ankle error (µm, to fit 80 columns) and iterations, a
+/// miss marked.
+fn ik_line(app: &App) -> Line<'static> {
+    let ik = app.walker.last_ik();
+    let leg = |s: Side| {
+        let a = &ik[s.index()];
+        let text = format!(
+            "{} {:.0}µm {}it{}",
+            if s == Side::Right { "R" } else { "L" },
+            a.position_error * 1e6,
+            a.iterations,
+            if a.reached { "" } else { " MISS" }
+        );
+        let colour = if s == Side::Right { RIGHT } else { LEFT };
+        Span::styled(text, Style::new().fg(if a.reached { colour } else { Color::Yellow }))
+    };
+    Line::from(vec![
+        Span::raw(format!("IK {} ", app.params.ik.solver.name())),
+        leg(Side::Right),
+        Span::raw(" "),
+        leg(Side::Left),
+    ])
 }
 
 fn legend() -> Line<'static> {
