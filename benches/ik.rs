@@ -83,7 +83,11 @@ fn gradient_full(c: &mut Criterion) {
         });
     });
     group.bench_function("first frame (100 restarts + 100 perturbations a leg)", |b| {
-        b.iter_batched(|| legs(full, thigh, shank), |mut fresh| solve_all(&mut fresh, &targets[..2]), BatchSize::SmallInput);
+        b.iter_batched(
+            || legs(full, thigh, shank),
+            |mut fresh| solve_all(&mut fresh, &targets[..2]),
+            BatchSize::SmallInput,
+        );
     });
     group.finish();
 }
