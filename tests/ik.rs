@@ -183,3 +183,36 @@ fn the_walk_reports_each_frames_ik_error_and_iterations() {
     walker.advance(1.0 / 60.0);
     assert!(walker.last_ik().iter().all(|a| a.iterations == 1 && a.position_error < 1e-9));
 }
+
+#[test]
+fn the_jacobian_variants_all_reach_the_walks_targets() {
+    let (mut params, _) = targets("default", 0.5);
+    for variant in ["dls", "transpose", "pseudo_inverse"] {
+        params.ik.jacobian = gaitlab::model::ik::JacobianVariant::from_name(variant).unwrap();
+        let targets = collect_targets(&params, 0.5, 60.0).unwrap();
+        let r = params.resolve();
+        let s = run_solver(&targets, IkSolverKind::JacobianDls, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets);
+        assert_eq!(s.reached, s.solves, "{variant}: {s:?}");
+        assert_eq!(s.limit_violations, 0, "{variant}: {s:?}");
+        if variant == "transpose" {
+            // The transpose has no curvature information: many more iterations.
+            assert!(s.iterations_mean > 20.0, "{s:?}");
+        } else {
+            assert!(s.iterations_mean < 5.0, "{variant}: {s:?}");
+        }
+    }
+}
+
+#[test]
+fn limits_off_with_random_restarts_report_no_spurious_violations() {
+    // Restarts drawn over wide ranges may end on another Euler branch of the same pose; the
+    // reported angles are the shared decomposition, so the walk's poses stay in range.
+    let (mut params, _) = targets("stairs_down", 0.5);
+    params.ik.limits = false;
+    params.ik.gradient_restarts = 30;
+    let targets = collect_targets(&params, 0.5, 60.0).unwrap();
+    let r = params.resolve();
+    let analytic = run_solver(&targets, IkSolverKind::Analytic, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets);
+    let gradient = run_solver(&targets, IkSolverKind::Gradient, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets);
+    assert_eq!(gradient.limit_violations, analytic.limit_violations, "{gradient:?}");
+}

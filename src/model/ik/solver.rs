@@ -375,6 +375,10 @@ impl LegSolver {
         let angles = if angles.is_finite() { angles } else { LegAngles::rest() };
         self.warm = Some(angles);
         let pose = chain.forward(angles, side);
+        // Random restarts can land on another Euler branch of the same pose (flexion past
+        // ±180°, say); report the one decomposition every solver shares, so limit checks
+        // compare poses, not parametrisations.
+        let angles = chain.angles_from_positions(pose, side, angles.hip_rot);
         let (position_error, swivel_arc) = chain.residual(pose, target);
         let reached = if s.solver.is_iterative() { position_error <= s.tolerance } else { position_error <= 1e-9 };
         IkAnswer {
