@@ -24,7 +24,20 @@ fn main() {
         ("optimiser 51x21", Box::new(move |f, a| ui::panels::draw_optimiser(f, Rect::new(0, 0, 51, 21), a, m))),
         ("editor 45x47", Box::new(move |f, a| ui::panels::draw_editor(f, Rect::new(0, 0, 45, 47), a))),
         ("tick only", Box::new(|_, _| {})),
+        ("full 160x48", Box::new(move |f, a| ui::draw(f, a, m))),
     ];
+    // `tui_profile PANEL N`: only that panel, N frames (for callgrind's instruction counts,
+    // which, unlike this VM's wall clock, repeat).
+    let args: Vec<String> = std::env::args().collect();
+    if let [_, only, n] = args.as_slice() {
+        let n: u32 = n.parse().unwrap();
+        let (_, draw) = panels.iter().find(|(name, _)| name.starts_with(only.as_str())).expect("a panel name");
+        for _ in 0..n {
+            app.tick(1.0 / 60.0);
+            t.draw(|f| draw(f, &app)).unwrap();
+        }
+        return;
+    }
     let start = Instant::now();
     for _ in 0..300 {
         app.tick(1.0 / 60.0);

@@ -8,7 +8,8 @@ use crate::tui::app::{App, CurveView};
 use crate::tui::ui::walk::{LEFT, RIGHT};
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
+use ratatui::widgets::canvas::{Canvas, Line as CLine};
+use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph};
 
 /// One line of a chart: legend name, colour, points.
 pub type ChartLine = (String, Color, Vec<(f64, f64)>);
@@ -169,13 +170,13 @@ pub fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, marker:
                 .data(&cursor),
         );
     }
+    let inner = super::panel(f, area, Line::raw(format!(" {} ", data.title)), None);
     let chart = Chart::new(datasets)
-        .block(Block::bordered().title(format!(" {} ", data.title)))
         .x_axis(Axis::default().title(data.x_label).bounds(x).labels([label(x[0]), label(x[1])]))
         .y_axis(Axis::default().bounds(y).labels([label(y[0]), label(y[1])]))
         .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
         .hidden_legend_constraints((Constraint::Percentage(60), Constraint::Percentage(60)));
-    f.render_widget(chart, area);
+    f.render_widget(chart, inner);
 }
 
 /// The curve panel: one chart, or a grid of four starting at the selected one.
@@ -196,14 +197,13 @@ pub fn draw_curves(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
 
 /// Hip, knee and ankle angles of both legs over the last cycles.
 pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
-    let block = Block::bordered().title(" Joint angles (deg) over time (s) ").title_bottom(Line::from(vec![
+    let legend = Line::from(vec![
         Span::raw(" "),
         Span::styled("right", Style::new().fg(RIGHT)),
         Span::raw(" "),
         Span::styled("left ", Style::new().fg(LEFT)),
-    ]));
-    let inner = block.inner(area);
-    f.render_widget(block, area);
+    ]);
+    let inner = super::panel(f, area, Line::raw(" Joint angles (deg) over time (s) "), Some(legend));
     if app.traces.len() < 2 || inner.height < 3 {
         f.render_widget(Paragraph::new("collecting…"), inner);
         return;
@@ -211,18 +211,55 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let t0 = app.traces.front().map_or(0.0, |t| t.0);
     let t1 = app.traces.back().map_or(1.0, |t| t.0).max(t0 + 1e-3);
     let rows = Layout::vertical([Constraint::Fill(1); 3]).split(inner);
-    // No more points than braille dots across: the rest would only cost drawing time.
-    let stride = (app.traces.len() / (2 * usize::from(inner.width).max(1))).max(1);
+    // One point a cell column (lines join them): more would only cost drawing time.
+    let stride = (app.traces.len() / usize::from(inner.width).max(1)).max(1);
     for (j, name) in ["hip flexion", "knee flexion", "ankle dorsiflexion"].iter().enumerate() {
         let right: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j])).collect();
         let left: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j + 3])).collect();
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1));
-        let chart = Chart::new(vec![
-            Dataset::default().marker(marker).graph_type(GraphType::Line).style(Style::new().fg(RIGHT)).data(&right),
-            Dataset::default().marker(marker).graph_type(GraphType::Line).style(Style::new().fg(LEFT)).data(&left),
-        ])
-        .x_axis(Axis::default().bounds([t0, t1]))
-        .y_axis(Axis::default().title(*name).bounds(y).labels([label(y[0]), label(y[1])]));
-        f.render_widget(chart, rows[j]);
+        draw_trace(f, rows[j], name, [t0, t1], y, [(&right, RIGHT), (&left, LEFT)], marker);
     }
+}
+
+/// A small line chart: the name on its first row, the y range at the left, both legs' lines
+/// on one canvas. A `Chart` would paint each line on its own canvas layer over the whole
+/// area; one layer halves the joint panel's drawing time (where the lines cross, the later
+/// one's colour shows, as with layers).
+fn draw_trace(
+    f: &mut Frame,
+    area: Rect,
+    name: &str,
+    x: [f64; 2],
+    y: [f64; 2],
+    lines: [(&[(f64, f64)], Color); 2],
+    marker: Marker,
+) {
+    if area.height < 2 || area.width < 8 {
+        return;
+    }
+    let (hi, lo) = (label(y[1]).content.into_owned(), label(y[0]).content.into_owned());
+    let gutter = hi.len().max(lo.len()) as u16 + 1;
+    let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
+    f.render_widget(Paragraph::new(Line::styled(name.to_string(), Style::new().fg(Color::Gray))), title);
+    let [labels, canvas] = Layout::horizontal([Constraint::Length(gutter), Constraint::Fill(1)]).areas(plot);
+    let mut label_lines = vec![Line::raw(String::new()); usize::from(labels.height)];
+    if let Some(first) = label_lines.first_mut() {
+        *first = Line::raw(format!("{hi:>w$}│", w = usize::from(gutter - 1)));
+    }
+    for line in label_lines.iter_mut().skip(1) {
+        *line = Line::raw(format!("{:>w$}│", "", w = usize::from(gutter - 1)));
+    }
+    if labels.height > 1 {
+        let last = label_lines.len() - 1;
+        label_lines[last] = Line::raw(format!("{lo:>w$}│", w = usize::from(gutter - 1)));
+    }
+    f.render_widget(Paragraph::new(label_lines), labels);
+    let widget = Canvas::default().marker(marker).x_bounds(x).y_bounds(y).paint(move |ctx| {
+        for (points, colour) in lines {
+            for pair in points.windows(2) {
+                ctx.draw(&CLine { x1: pair[0].0, y1: pair[0].1, x2: pair[1].0, y2: pair[1].1, color: colour });
+            }
+        }
+    });
+    f.render_widget(widget, canvas);
 }

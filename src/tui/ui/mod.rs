@@ -13,6 +13,39 @@ use ratatui::widgets::Tabs;
 /// Screens at least this big get every panel at once.
 pub const WIDE: (u16, u16) = (140, 40);
 
+/// Draws a panel's border with a title at the top left and, optionally, one at the bottom
+/// left — the cells `Block::bordered().title(..).title_bottom(..)` gives — and returns the
+/// inner area. `Block` also restyles every cell of the area and merges each border symbol;
+/// on the freshly reset buffer of a frame neither changes anything, and together they cost
+/// more than the rest of a panel's frame.
+pub fn panel(f: &mut Frame, area: Rect, title: Line<'_>, bottom: Option<Line<'_>>) -> Rect {
+    let area = area.intersection(f.area());
+    if area.width < 2 || area.height < 2 {
+        return Rect { x: area.x, y: area.y, width: 0, height: 0 };
+    }
+    let buf = f.buffer_mut();
+    let (left, top) = (area.x, area.y);
+    let (right, bottom_y) = (area.right() - 1, area.bottom() - 1);
+    for x in left + 1..right {
+        buf[(x, top)].set_char('─');
+        buf[(x, bottom_y)].set_char('─');
+    }
+    for y in top + 1..bottom_y {
+        buf[(left, y)].set_char('│');
+        buf[(right, y)].set_char('│');
+    }
+    buf[(left, top)].set_char('┌');
+    buf[(right, top)].set_char('┐');
+    buf[(left, bottom_y)].set_char('└');
+    buf[(right, bottom_y)].set_char('┘');
+    let width = area.width - 2;
+    title.render(Rect { x: left + 1, y: top, width, height: 1 }, buf);
+    if let Some(line) = bottom {
+        line.render(Rect { x: left + 1, y: bottom_y, width, height: 1 }, buf);
+    }
+    Rect { x: left + 1, y: top + 1, width: area.width - 2, height: area.height - 2 }
+}
+
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
     let area = f.area();

@@ -5,21 +5,18 @@ use crate::tui::app::{App, Overlay, PickKind};
 use crate::tui::keys::HELP;
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
-use ratatui::widgets::{
-    Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Row, Table, Wrap,
-};
+use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Wrap};
 
 /// The editor: every key by group, value, unit, a `*` on changed ones; the selected key's
 /// range and doc under the list.
 pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
-    let block = Block::bordered().title(" Parameters (enter: type, x: default) ").title_bottom(Line::from(vec![
+    let legend = Line::from(vec![
         Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
         Span::raw("unsaved "),
         Span::styled("grey", Style::new().fg(Color::DarkGray)),
         Span::raw(" derived "),
-    ]));
-    let inner = block.inner(area);
-    f.render_widget(block, area);
+    ]);
+    let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(legend));
     let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
     // Rows are group headers (None) or keys; only the rows that fit are built, in a window
     // that keeps the selected key in view.
@@ -34,13 +31,17 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     let height = usize::from(list_area.height).max(1);
     let first = selected_row.saturating_sub(height / 2).min(rows.len().saturating_sub(height));
     let saved = &app.saved;
-    let items: Vec<ListItem> = rows[first..(first + height).min(rows.len())]
-        .iter()
-        .enumerate()
-        .map(|(k, row)| match row {
+    // Written straight into the buffer: the same cells a `List` of styled `Line`s gives, at
+    // well under half the cost (the editor was the lab's most expensive panel to draw).
+    let buf = f.buffer_mut();
+    let end = list_area.x + list_area.width;
+    for (k, row) in rows[first..(first + height).min(rows.len())].iter().enumerate() {
+        let y = list_area.y + k as u16;
+        let x = list_area.x;
+        match row {
             None => {
                 let group = PARAMS[rows[first + k + 1].unwrap_or(0)].group();
-                ListItem::new(Line::styled(format!("[{group}]"), Style::new().fg(Color::Yellow).bold()))
+                put(buf, x, y, &format!("[{group}]"), end, Style::new().fg(Color::Yellow).bold());
             }
             Some(i) => {
                 let spec = &PARAMS[*i];
@@ -48,18 +49,18 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
                 let mark = if now == (spec.get)(saved) { " " } else { "*" };
                 let derived = matches!(now, crate::config::schema::Value::Auto);
                 let value_style = if derived { Style::new().fg(Color::DarkGray) } else { Style::new().fg(Color::Cyan) };
-                ListItem::new(Line::from(vec![
-                    Span::styled(mark, Style::new().fg(Color::LightRed).bold()),
-                    Span::raw(format!("{:<21}", spec.name())),
-                    Span::styled(app.value_text(spec), value_style),
-                    Span::raw(if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) }),
-                ]))
+                let x = put(buf, x, y, mark, end, Style::new().fg(Color::LightRed).bold());
+                let x = put(buf, x, y, &format!("{:<21}", spec.name()), end, Style::new());
+                let x = put(buf, x, y, &app.value_text(spec), end, value_style);
+                if !spec.unit.is_empty() {
+                    put(buf, x, y, &format!(" {}", spec.unit), end, Style::new());
+                }
             }
-        })
-        .collect();
-    let list = List::new(items).highlight_style(Style::new().reversed());
-    let mut state = ListState::default().with_selected(Some(selected_row - first));
-    f.render_stateful_widget(list, list_area, &mut state);
+        }
+        if k + first == selected_row {
+            buf.set_style(Rect { x: list_area.x, y, width: list_area.width, height: 1 }, Style::new().reversed());
+        }
+    }
     let spec = &PARAMS[app.selected];
     let step = match spec.kind {
         Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
@@ -73,13 +74,30 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     f.render_widget(doc, doc_area);
 }
 
+/// Writes `text` from `x` on row `y`, stopping before column `end`; returns the column after
+/// it. ASCII goes cell by cell: `Buffer::set_stringn` segments every string into graphemes and
+/// measures each one, which made up most of the editor's drawing time.
+fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, end: u16, style: Style) -> u16 {
+    if !text.is_ascii() {
+        let (x, _) = buf.set_stringn(x, y, text, usize::from(end.saturating_sub(x)), style);
+        return x;
+    }
+    let mut x = x;
+    for b in text.bytes() {
+        if x >= end {
+            break;
+        }
+        buf[(x, y)].set_char(char::from(b)).set_style(style);
+        x += 1;
+    }
+    x
+}
+
 /// The optimiser: recent choices as a table, and the last step's cost landscape.
 pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let o = &app.params.optimiser;
     let method = if o.enabled { o.method.name() } else { "off" };
-    let block = Block::bordered().title(format!(" Optimiser: {method} (o: re-run, m: method) "));
-    let inner = block.inner(area);
-    f.render_widget(block, area);
+    let inner = super::panel(f, area, Line::raw(format!(" Optimiser: {method} (o: re-run, m: method) ")), None);
     let plans = app.walker.step_plans();
     let [table_area, chart_area] =
         Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(inner);
@@ -88,43 +106,45 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         app.rerun.iter().chain(plans.iter().rev().map(|p| &p.optimisation)).take(rows_fit).collect();
     let cost = |c: Option<f64>| c.map_or("unreach".into(), |c| format!("{c:.0}"));
     let rerun_step = app.rerun.as_ref().map(|r| r.step);
-    let rows: Vec<Row> = records
-        .iter()
-        .enumerate()
-        .map(|(i, r)| {
-            let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
-            // The re-run sits on top, its step marked with the method it used.
-            let step = if i == 0 && rerun_step == Some(r.step) && app.rerun.is_some() {
-                format!("{}{}", r.step, r.method.map_or("", |m| &m.name()[..1]))
-            } else {
-                r.step.to_string()
-            };
-            Row::new(vec![
-                step,
-                r.side.suffix().to_string(),
-                format!("{:.3}", r.chosen_ratio()),
-                cost(r.chosen.cost),
-                cost(r.fixed_rule.cost),
-                format!("{}/{}", r.feasible, r.evaluations),
-                if app.show_timings { format!("{:.0}", r.elapsed_us) } else { "-".into() },
-            ])
-            .style(style)
-        })
-        .collect();
-    let table = Table::new(
-        rows,
-        [
-            Constraint::Length(5),
-            Constraint::Length(1),
-            Constraint::Length(5),
-            Constraint::Length(7),
-            Constraint::Length(7),
-            Constraint::Length(5),
-            Constraint::Length(5),
-        ],
-    )
-    .header(Row::new(["step", "", "ratio", "cost", "fixed", "feas", "us"]).style(Style::new().bold()));
-    f.render_widget(table, table_area);
+    // Written cell by cell (see `put`): the cells a `Table` with these column widths and one
+    // space between columns gives.
+    const WIDTHS: [u16; 7] = [5, 1, 5, 7, 7, 5, 5];
+    let buf = f.buffer_mut();
+    let row_at = |buf: &mut Buffer, y: u16, cells: &[String], style: Style| {
+        buf.set_style(Rect { x: table_area.x, y, width: table_area.width, height: 1 }, style);
+        let table_end = table_area.x + table_area.width;
+        let mut x = table_area.x;
+        for (text, width) in cells.iter().zip(WIDTHS) {
+            if x >= table_end {
+                break;
+            }
+            put(buf, x, y, text, (x + width).min(table_end), style);
+            x += width + 1;
+        }
+    };
+    if table_area.height > 0 {
+        let header = ["step", "", "ratio", "cost", "fixed", "feas", "us"].map(String::from);
+        row_at(buf, table_area.y, &header, Style::new().bold());
+    }
+    for (i, r) in records.iter().enumerate() {
+        let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
+        // The re-run sits on top, its step marked with the method it used.
+        let step = if i == 0 && rerun_step == Some(r.step) && app.rerun.is_some() {
+            format!("{}{}", r.step, r.method.map_or("", |m| &m.name()[..1]))
+        } else {
+            r.step.to_string()
+        };
+        let cells = [
+            step,
+            r.side.suffix().to_string(),
+            format!("{:.3}", r.chosen_ratio()),
+            cost(r.chosen.cost),
+            cost(r.fixed_rule.cost),
+            format!("{}/{}", r.feasible, r.evaluations),
+            if app.show_timings { format!("{:.0}", r.elapsed_us) } else { "-".into() },
+        ];
+        row_at(buf, table_area.y + 1 + i as u16, &cells, style);
+    }
     let Some((step, landscape)) = &app.landscape else {
         f.render_widget(Paragraph::new("no step planned yet"), chart_area);
         return;

@@ -5,8 +5,8 @@ use crate::tui::app::{App, View};
 use glam::DVec3;
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
+use ratatui::widgets::Paragraph;
 use ratatui::widgets::canvas::{Canvas, Context, Line as CLine, Points};
-use ratatui::widgets::{Block, Paragraph};
 
 /// Right limbs are drawn in this colour, left in [`LEFT`].
 pub const RIGHT: Color = Color::LightRed;
@@ -19,9 +19,7 @@ pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         View::Side => "side",
         View::Front => "front",
     };
-    let block = Block::bordered().title(format!(" Walk: {view} view (v) ")).title_bottom(legend());
-    let inner = block.inner(area);
-    f.render_widget(block, area);
+    let inner = super::panel(f, area, Line::raw(format!(" Walk: {view} view (v) ")), Some(legend()));
     let [canvas_area, info_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
     draw_canvas(f, canvas_area, app, marker);
     let fr = &app.frame;
