@@ -4,7 +4,7 @@ use super::{ExitCode, load_config};
 use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
 use crate::model::ik::{IkSettings, IkSolverKind};
 use serde_json::json;
-use std::io::{self, Write};
+use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 
 /// The solvers named in `list` (comma-separated), or a message naming the valid ones.
@@ -62,9 +62,16 @@ pub(super) fn run(
         }
     };
     let r = params.resolve();
+    // The gradient solver takes seconds over a long walk: say what is running, on a terminal.
+    let tty = io::stderr().is_terminal();
     let rows: Vec<(IkSolverKind, IkSummary)> = solvers
         .iter()
-        .map(|&solver| (solver, run_solver(&targets, solver, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets)))
+        .map(|&solver| {
+            if tty {
+                eprintln!("gaitlab ik: {} on {} targets", solver.name(), targets.len());
+            }
+            (solver, run_solver(&targets, solver, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets))
+        })
         .collect();
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());

@@ -291,7 +291,7 @@ pub static PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "optimiser.method",
         unit: "",
-        doc: "Search: thesis (two levels of candidates), golden / brent (the thesis's levels, then golden section / Brent around the best), joint (as brent, then on the height too)",
+        doc: "Search: thesis (two levels of candidates); golden / brent (the thesis's first level, then as many points again placed by golden sections / parabolas around its best: no slower, never higher); joint (both levels, then Brent on position, height, position: deepest, ~5x slower)",
         kind: Kind::Choice(METHODS),
         get: |p| Value::Word(p.optimiser.method.name()),
         set: |p, v| {
@@ -315,7 +315,7 @@ pub static PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "optimiser.refine",
         unit: "",
-        doc: "Candidates spread around the first level's best: the second level (0: none); golden, brent and joint then refine its best",
+        doc: "Candidates spread around the first level's best: the second level (0: none); golden and brent spend the same number, joint refines after it",
         kind: Kind::Int { min: 0, max: 50 },
         get: |p| Value::Int(i64::from(p.optimiser.refine)),
         set: |p, v| {
@@ -349,7 +349,7 @@ pub static PARAMS: &[ParamSpec] = &[
         },
     },
     real!(optimiser => range_pct, "%", 10.0, 95.0, "Width of the searched range, centred between the two mid-stance positions, as a share of their distance"),
-    real!(optimiser => tolerance_mm, "mm", 0.01, 10.0, "Golden, brent and joint stop when the position is known this closely"),
+    real!(optimiser => tolerance_mm, "mm", 0.01, 10.0, "Golden and brent stop early, joint stops, when the position is known this closely"),
     real!(optimiser => weight_hip, "", 0.0, 100.0, "Weight of the hip's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_knee, "", 0.0, 100.0, "Weight of the knee's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_ankle, "", 0.0, 100.0, "Weight of the ankle's squared angular acceleration in the pelvis choice"),

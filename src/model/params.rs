@@ -188,11 +188,14 @@ impl IkParams {
 pub enum SearchMethod {
     /// The thesis's two levels: evenly spaced candidates, then a finer set around the best.
     Thesis,
-    /// The thesis's two levels, then golden-section search around their best.
+    /// The thesis's first level, then the second level's budget spent by golden sections
+    /// in the bracket around its best (the thesis's grid where that bracket's ends are both
+    /// infeasible): never more evaluations than the thesis, never a higher cost.
     Golden,
-    /// The thesis's two levels, then Brent's method around their best.
+    /// As `Golden`, with parabolic steps through the bracket where all three costs are known.
     Brent,
-    /// As `Brent`, then Brent on the height, then on the position again
+    /// The thesis's two levels, then Brent's method on the position to the tolerance, on
+    /// the height, and on the position again: the deepest and slowest search
     /// (Chung & Hahn search both).
     Joint,
 }
