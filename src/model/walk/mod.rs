@@ -1048,6 +1048,20 @@ impl Walker {
         self.infeasible_steps
     }
 
+    /// Drops all but about the last `steps` step plans and footfalls (between `steps` and
+    /// `2·steps` stay, so the trimming is amortised). The walk itself never looks back at
+    /// them; a long-running lab calls this so its memory stays flat, while a headless run
+    /// keeps everything for its report.
+    pub fn keep_recent_history(&mut self, steps: usize) {
+        let steps = steps.max(2);
+        if self.step_plans.len() > 2 * steps {
+            self.step_plans.drain(..self.step_plans.len() - steps);
+        }
+        if self.footfalls.len() > 2 * steps {
+            self.footfalls.drain(..self.footfalls.len() - steps);
+        }
+    }
+
     /// The legs' last IK answers, right then left: error, iterations, whether reached.
     #[must_use]
     pub fn last_ik(&self) -> &[IkAnswer; 2] {
@@ -1244,6 +1258,25 @@ pub fn bone_frame(along: DVec3, hinge: DVec3) -> DQuat {
 mod tests {
     use super::*;
     use crate::config::presets;
+
+    #[test]
+    fn trimming_the_history_keeps_memory_flat_and_the_walk_unchanged() {
+        let params = presets::params("rough").unwrap().unwrap();
+        let mut full = Walker::new(&params).unwrap();
+        let mut trimmed = full.clone();
+        for frame in 0..3000u64 {
+            full.advance(1.0 / 60.0);
+            trimmed.advance(1.0 / 60.0);
+            trimmed.keep_recent_history(8);
+            assert!(trimmed.step_plans().len() <= 16 && trimmed.footfalls().len() <= 16);
+            if frame % 97 == 0 {
+                assert_eq!(format!("{:?}", full.frame(frame)), format!("{:?}", trimmed.frame(frame)), "frame {frame}");
+            }
+        }
+        assert!(full.step_plans().len() > 80, "the untrimmed walk kept {}", full.step_plans().len());
+        assert_eq!(full.step_plans().last().unwrap().step, trimmed.step_plans().last().unwrap().step);
+        assert_eq!(full.footfalls().last(), trimmed.footfalls().last());
+    }
 
     #[test]
     fn a_step_with_no_feasible_candidate_keeps_the_previous_ratio_and_is_counted() {
