@@ -378,3 +378,46 @@ fn the_ik_solver_switches_live_from_a_key_and_the_walk_shows_its_error_and_itera
     app.tick(1.0 / 60.0);
     assert!(screen(&app, 100, 30).contains("IK jacobian_dls"));
 }
+
+#[test]
+fn the_embedded_default_saves_to_a_typed_path_and_a_bad_path_is_reported_inline() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-saveas-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut app = walked(None, 10);
+    select(&mut app, "walk.speed_mps");
+    key(&mut app, KeyCode::Right);
+    let edited = app.params.walk.speed_mps;
+    // No file yet: `s` asks for a path, prefilled.
+    key(&mut app, KeyCode::Char('s'));
+    let Some(Overlay::SavePath { text, .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
+    assert_eq!(text, "my_walk.toml");
+    // Clear it and type a path in a folder that does not exist: the error stays in the box.
+    for _ in 0..text.len() {
+        key(&mut app, KeyCode::Backspace);
+    }
+    let bad = dir.join("missing/sub/walk.toml");
+    keys(&mut app, &bad.display().to_string());
+    key(&mut app, KeyCode::Enter);
+    let Some(Overlay::SavePath { error: Some(error), .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
+    assert!(error.contains("not saved"), "{error}");
+    assert!(app.is_modified() && app.path.is_none(), "a failed save changes nothing");
+    assert!(!bad.exists());
+    // Now a good path.
+    for _ in 0..bad.display().to_string().len() {
+        key(&mut app, KeyCode::Backspace);
+    }
+    let good = dir.join("walk.toml");
+    keys(&mut app, &good.display().to_string());
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.overlay, None, "{:?}", app.message);
+    assert!(!app.is_modified());
+    assert_eq!(app.path.as_deref(), Some(good.as_path()));
+    // The file is a whole config (the default's comments kept) that loads to the edited walk.
+    let text = std::fs::read_to_string(&good).unwrap();
+    assert!(text.contains("# Walking speed"), "comments kept");
+    let reloaded = gaitlab::config::parse_str(&text, "walk.toml").unwrap();
+    assert_eq!(reloaded.walk.speed_mps, edited);
+    assert!(!std::fs::read_dir(&dir).unwrap().any(|e| e.unwrap().file_name().to_string_lossy().contains(".tmp")));
+    let _ = std::fs::remove_dir_all(&dir);
+}
