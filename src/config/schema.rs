@@ -171,6 +171,27 @@ macro_rules! switch {
     };
 }
 
+/// A key whose value is one of an enum's names (the enum has `name` and `from_name`).
+macro_rules! choice {
+    ($grp:ident => $field:ident, $ty:ident, $words:expr, $doc:expr) => {
+        ParamSpec {
+            key: concat!(stringify!($grp), ".", stringify!($field)),
+            unit: "",
+            doc: $doc,
+            kind: Kind::Choice($words),
+            get: |p| Value::Word(p.$grp.$field.name()),
+            set: |p, v| {
+                if let Value::Word(w) = v {
+                    // In the list: checked against `kind` before any set.
+                    if let Some(x) = $ty::from_name(w) {
+                        p.$grp.$field = x;
+                    }
+                }
+            },
+        }
+    };
+}
+
 const SOLVERS: &[&str] = &["analytic", "ccd", "fabrik", "jacobian_dls", "gradient"];
 const JACOBIAN_VARIANTS: &[&str] = &["dls", "transpose", "pseudo_inverse"];
 const SEXES: &[&str] = &["female", "male"];
@@ -229,18 +250,7 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(arms => spread_deg, "deg", 0.0, 45.0, "Arm abduction away from the trunk"),
     real!(arms => counter_rotation_pct, "%", 0.0, 150.0, "Thorax counter-rotation against the pelvic rotation"),
     real!(ik => reach_margin, "", 0.95, 1.0, "Share of full leg reach the planner keeps the stance leg within (the knee never locks)"),
-    ParamSpec {
-        key: "ik.solver",
-        unit: "",
-        doc: "Leg IK: analytic (exact, the reference), ccd, fabrik, jacobian_dls or gradient (seed 002); the planner always predicts with analytic",
-        kind: Kind::Choice(SOLVERS),
-        get: |p| Value::Word(p.ik.solver.name()),
-        set: |p, v| {
-            if let Value::Word(w) = v {
-                p.ik.solver = IkSolverKind::from_name(w).unwrap_or(IkSolverKind::Analytic);
-            }
-        },
-    },
+    choice!(ik => solver, IkSolverKind, SOLVERS, "Leg IK: analytic (exact, the reference), ccd, fabrik, jacobian_dls or gradient (seed 002); the planner always predicts with analytic"),
     real!(ik => tolerance_mm, "mm", 0.001, 10.0, "Iterative solvers stop when the ankle is this close to its target and the knee this close to the reference plane"),
     int!(ik => max_iterations, u32, 1, 1_000_000, "Most iterations of ccd, fabrik and jacobian_dls per solve"),
     switch!(ik => limits, "Iterative solvers keep the joints within the ranges below (the analytic solver is only measured against them)"),
@@ -256,18 +266,7 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(ik => ccd_stiffness_hip, "", 0.01, 1.0, "CCD: share of each hip turn applied per iteration"),
     real!(ik => ccd_stiffness_knee, "", 0.01, 1.0, "CCD: share of each knee turn applied per iteration"),
     real!(ik => dls_damping_m, "m", 0.0, 1.0, "Jacobian: damping lambda of damped least squares"),
-    ParamSpec {
-        key: "ik.jacobian",
-        unit: "",
-        doc: "Jacobian update: dls (damped least squares), transpose or pseudo_inverse",
-        kind: Kind::Choice(JACOBIAN_VARIANTS),
-        get: |p| Value::Word(p.ik.jacobian.name()),
-        set: |p, v| {
-            if let Value::Word(w) = v {
-                p.ik.jacobian = JacobianVariant::from_name(w).unwrap_or(JacobianVariant::Dls);
-            }
-        },
-    },
+    choice!(ik => jacobian, JacobianVariant, JACOBIAN_VARIANTS, "Jacobian update: dls (damped least squares), transpose or pseudo_inverse"),
     real!(ik => gradient_delta0, "", 0.001, 100.0, "Gradient: starting step, the multiple of the gradient subtracted (seed 002: 5)"),
     real!(ik => gradient_epsilon, "", 1e-8, 1.0, "Gradient: a descent ends when the halved step falls below this (seed 002: 0.0001)"),
     int!(ik => gradient_restarts, u32, 0, 1000, "Gradient: random starting poses descended on the first frame, the best kept (seed 002: 100)"),
@@ -288,42 +287,9 @@ pub static PARAMS: &[ParamSpec] = &[
             }
         },
     },
-    ParamSpec {
-        key: "optimiser.method",
-        unit: "",
-        doc: "Search: thesis (two levels of candidates); golden / brent (the thesis's first level, then as many points again placed by golden sections / parabolas around its best: no slower, never higher); joint (both levels, then Brent on position, height, position: deepest, ~5x slower)",
-        kind: Kind::Choice(METHODS),
-        get: |p| Value::Word(p.optimiser.method.name()),
-        set: |p, v| {
-            if let Value::Word(w) = v {
-                p.optimiser.method = SearchMethod::from_name(w).unwrap_or(SearchMethod::Thesis);
-            }
-        },
-    },
-    ParamSpec {
-        key: "optimiser.candidates",
-        unit: "",
-        doc: "Evenly spaced candidates over the range: the first level, with which every method starts",
-        kind: Kind::Int { min: 3, max: 50 },
-        get: |p| Value::Int(i64::from(p.optimiser.candidates)),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.optimiser.candidates = u32::try_from(*n).unwrap_or(5);
-            }
-        },
-    },
-    ParamSpec {
-        key: "optimiser.refine",
-        unit: "",
-        doc: "Candidates spread around the first level's best: the second level (0: none); golden and brent spend the same number, joint refines after it",
-        kind: Kind::Int { min: 0, max: 50 },
-        get: |p| Value::Int(i64::from(p.optimiser.refine)),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.optimiser.refine = u32::try_from(*n).unwrap_or(5);
-            }
-        },
-    },
+    choice!(optimiser => method, SearchMethod, METHODS, "Search: thesis (two levels of candidates); golden / brent (the thesis's first level, then as many points again placed by golden sections / parabolas around its best: no slower, never higher); joint (both levels, then Brent on position, height, position: deepest, ~5x slower)"),
+    int!(optimiser => candidates, u32, 3, 50, "Evenly spaced candidates over the range: the first level, with which every method starts"),
+    int!(optimiser => refine, u32, 0, 50, "Candidates spread around the first level's best: the second level (0: none); golden and brent spend the same number, joint refines after it"),
     ParamSpec {
         key: "optimiser.cost",
         unit: "",
@@ -336,18 +302,7 @@ pub static PARAMS: &[ParamSpec] = &[
             }
         },
     },
-    ParamSpec {
-        key: "optimiser.samples",
-        unit: "",
-        doc: "Samples of the simulated stance, half mid-stance to double support, half double support to the next mid-stance",
-        kind: Kind::Int { min: 10, max: 400 },
-        get: |p| Value::Int(i64::from(p.optimiser.samples)),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.optimiser.samples = u32::try_from(*n).unwrap_or(50);
-            }
-        },
-    },
+    int!(optimiser => samples, u32, 10, 400, "Samples of the simulated stance, half mid-stance to double support, half double support to the next mid-stance"),
     real!(optimiser => range_pct, "%", 10.0, 95.0, "Width of the searched range, centred between the two mid-stance positions, as a share of their distance"),
     real!(optimiser => tolerance_mm, "mm", 0.01, 10.0, "Golden and brent stop early, joint stops, when the position is known this closely"),
     real!(optimiser => weight_hip, "", 0.0, 100.0, "Weight of the hip's squared angular acceleration in the pelvis choice"),
@@ -380,18 +335,7 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(terrain => start_x_m, "m", 0.0, 50.0, "Where stairs, slope or rough ground begin; level before"),
     real!(terrain => rise_m, "m", 0.02, 0.25, "Stairs: height of one step"),
     real!(terrain => run_m, "m", 0.2, 0.8, "Stairs: depth of one tread (must hold a whole foot)"),
-    ParamSpec {
-        key: "terrain.count",
-        unit: "",
-        doc: "Stairs: number of steps; level ground after the last",
-        kind: Kind::Int { min: 1, max: 500 },
-        get: |p| Value::Int(i64::from(p.terrain.count)),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.terrain.count = u32::try_from(*n).unwrap_or(1);
-            }
-        },
-    },
+    int!(terrain => count, u32, 1, 500, "Stairs: number of steps; level ground after the last"),
     ParamSpec {
         key: "terrain.direction",
         unit: "",
@@ -405,35 +349,13 @@ pub static PARAMS: &[ParamSpec] = &[
         },
     },
     real!(terrain => grade_pct, "%", -25.0, 25.0, "Slope: rise over run x 100, negative downhill"),
-    ParamSpec {
-        key: "terrain.seed",
-        unit: "",
-        doc: "Random: seed of the portable generator; the same seed gives the same ground everywhere",
-        kind: Kind::Int { min: 0, max: 9_007_199_254_740_991 },
-        get: |p| Value::Int(p.terrain.seed as i64),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.terrain.seed = u64::try_from(*n).unwrap_or(0);
-            }
-        },
-    },
+    int!(terrain => seed, u64, 0, 9_007_199_254_740_991, "Random: seed of the portable generator; the same seed gives the same ground everywhere"),
     real!(terrain => roughness, "", 0.0, 1.0, "Random: roughness exponent H; large is smooth, small is rough"),
     real!(terrain => amplitude_m, "m", 0.0, 0.3, "Random: range of the first displacement"),
     real!(terrain => segment_m, "m", 0.1, 2.0, "Random: width of one terrain segment"),
     real!(terrain => length_m, "m", 10.0, 5000.0, "Random: length of ground generated; level after it"),
     real!(sim => fps, "frames/s", 10.0, 1000.0, "Frame rate of simulate and report when --fps is not given"),
-    ParamSpec {
-        key: "sim.cycles",
-        unit: "",
-        doc: "Gait cycles simulated when --cycles is not given",
-        kind: Kind::Int { min: 1, max: 100_000 },
-        get: |p| Value::Int(i64::from(p.sim.cycles)),
-        set: |p, v| {
-            if let Value::Int(n) = v {
-                p.sim.cycles = u32::try_from(*n).unwrap_or(1);
-            }
-        },
-    },
+    int!(sim => cycles, u32, 1, 100_000, "Gait cycles simulated when --cycles is not given"),
 ];
 
 /// The spec of `key`.

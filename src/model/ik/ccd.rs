@@ -5,27 +5,14 @@
 //! leaves the ankle where it is.
 
 use crate::model::ik::chain::{LegAngles, LegChain, swivel_to_reference};
-use crate::model::ik::solver::{IkSettings, Iterated, Stall, converged, unlock_knee};
+use crate::model::ik::solver::{IkSettings, Iterated, iterate, unlock_knee};
 use glam::{DQuat, DVec3};
 
 /// Solves for the ankle at `target` (leg frame) from `start`.
 #[must_use]
 pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &IkSettings) -> Iterated {
     let limits = chain.limits;
-    let mut angles = start;
-    let mut stall = Stall::new(chain, target);
-    for iteration in 0..=s.max_iterations {
-        let pose = chain.forward(angles, side);
-        if converged(chain, pose, target, s.tolerance) {
-            return Iterated { angles, iterations: iteration };
-        }
-        let (distance, arc) = chain.residual(pose, target);
-        let error = distance.hypot(arc);
-        // Beyond reach the chain straightens toward the target and stops improving.
-        if iteration == s.max_iterations || stall.stalled(error) {
-            return Iterated { angles, iterations: iteration };
-        }
-
+    iterate(chain, target, side, start, s, |mut angles, pose| {
         // Knee: turn the shank about the hinge toward the target.
         let axis = LegChain::knee_axis(angles, side);
         let e = pose.ankle - pose.knee;
@@ -49,11 +36,8 @@ pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &I
         // A knee driven straight is re-bent and the hip re-aimed before the next knee step,
         // which then sees the ankle past the target and bends further.
         let unlocked = unlock_knee(chain, angles, target);
-        if unlocked != angles {
-            angles = hip_step(chain, unlocked, side, target, 1.0);
-        }
-    }
-    Iterated { angles, iterations: s.max_iterations }
+        if unlocked == angles { angles } else { hip_step(chain, unlocked, side, target, 1.0) }
+    })
 }
 
 /// The hip's CCD step: the shortest rotation taking the hip→ankle line onto the hip→target

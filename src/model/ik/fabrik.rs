@@ -5,41 +5,28 @@
 //! hip→ankle axis toward the reference vector, FABRIK's usual pole target.
 
 use crate::model::ik::chain::{ChainPose, LegAngles, LegChain, swivel_to_reference};
-use crate::model::ik::solver::{IkSettings, Iterated, Stall, converged, unlock_knee};
+use crate::model::ik::solver::{IkSettings, Iterated, iterate, unlock_knee};
 use glam::DVec3;
 
 /// Solves for the ankle at `target` (leg frame) from `start`.
 #[must_use]
 pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &IkSettings) -> Iterated {
     let limits = chain.limits;
-    let mut angles = unlock_knee(chain, start, target);
-    let mut stall = Stall::new(chain, target);
-    for iteration in 0..=s.max_iterations {
-        let pose = chain.forward(angles, side);
-        if converged(chain, pose, target, s.tolerance) {
-            return Iterated { angles, iterations: iteration };
-        }
-        let (distance, arc) = chain.residual(pose, target);
-        let error = distance.hypot(arc);
-        if iteration == s.max_iterations || stall.stalled(error) {
-            return Iterated { angles, iterations: iteration };
-        }
-
+    let start = unlock_knee(chain, start, target);
+    iterate(chain, target, side, start, s, |angles, pose| {
         let (pose, _) = swivel_to_reference(pose);
-        let mut knee = pose.knee;
         // Backward: ankle on the target.
-        knee = target + (knee - target).normalize_or(DVec3::Y) * chain.shank;
+        let knee = target + (pose.knee - target).normalize_or(DVec3::Y) * chain.shank;
         // Forward: hip at the origin.
-        knee = knee.normalize_or(DVec3::NEG_Y) * chain.thigh;
+        let knee = knee.normalize_or(DVec3::NEG_Y) * chain.thigh;
         let ankle = knee + (target - knee).normalize_or(DVec3::NEG_Y) * chain.shank;
         let reached = ChainPose { knee, ankle };
 
         // Constraints: the hinge and the ranges, through the angles.
-        angles = limits.clamp(chain.angles_from_positions(reached, side, angles.hip_rot));
+        let angles = limits.clamp(chain.angles_from_positions(reached, side, angles.hip_rot));
         let pose = chain.forward(angles, side);
         let (_, turn) = swivel_to_reference(pose);
         let hip = turn * LegChain::hip_rotation(angles, side);
-        angles = unlock_knee(chain, limits.clamp(LegChain::hip_angles(hip, side, angles.knee_flex)), target);
-    }
-    Iterated { angles, iterations: s.max_iterations }
+        unlock_knee(chain, limits.clamp(LegChain::hip_angles(hip, side, angles.knee_flex)), target)
+    })
 }

@@ -4,7 +4,7 @@
 //! differences of the chain's own forward kinematics.
 
 use crate::model::ik::chain::{LegAngles, LegChain};
-use crate::model::ik::solver::{IkSettings, Iterated, JacobianVariant, Stall, converged};
+use crate::model::ik::solver::{IkSettings, Iterated, JacobianVariant, iterate};
 use glam::{DMat4, DVec3, DVec4};
 
 /// Largest joint update per iteration (rad): keeps a near-singular step from flinging the leg.
@@ -23,17 +23,8 @@ fn task(chain: &LegChain, angles: LegAngles, side: f64, target: DVec3) -> DVec4 
 #[must_use]
 pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &IkSettings) -> Iterated {
     let limits = chain.limits;
-    let mut angles = start;
-    let mut stall = Stall::new(chain, target);
-    for iteration in 0..=s.max_iterations {
-        let pose = chain.forward(angles, side);
-        if converged(chain, pose, target, s.tolerance) {
-            return Iterated { angles, iterations: iteration };
-        }
+    iterate(chain, target, side, start, s, |angles, _| {
         let e = task(chain, angles, side, target);
-        if iteration == s.max_iterations || stall.stalled(e.length()) {
-            return Iterated { angles, iterations: iteration };
-        }
         // J = ∂(ankle, arc)/∂θ = −∂e/∂θ.
         let base = angles.to_array();
         let mut columns = [DVec4::ZERO; 4];
@@ -67,7 +58,6 @@ pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &I
         for (x, d) in next.iter_mut().zip(step.to_array()) {
             *x += d * scale;
         }
-        angles = limits.clamp(LegAngles::from_array(next));
-    }
-    Iterated { angles, iterations: s.max_iterations }
+        limits.clamp(LegAngles::from_array(next))
+    })
 }

@@ -270,11 +270,31 @@ pub fn unlock_knee(chain: &LegChain, angles: LegAngles, target: DVec3) -> LegAng
     }
 }
 
-/// Whether a pose answers the question within the tolerance.
-#[must_use]
-pub fn converged(chain: &LegChain, pose: ChainPose, target: DVec3, tolerance: f64) -> bool {
-    let (distance, arc) = chain.residual(pose, target);
-    distance <= tolerance && arc.abs() <= tolerance
+/// Runs an iterative solver's `step` from `start` until the pose is within the tolerance,
+/// the iterations run out, or (out of reach) it stops improving. `step` gets the current
+/// angles and their pose and returns the next angles.
+pub fn iterate(
+    chain: &LegChain,
+    target: DVec3,
+    side: f64,
+    start: LegAngles,
+    s: &IkSettings,
+    mut step: impl FnMut(LegAngles, ChainPose) -> LegAngles,
+) -> Iterated {
+    let mut angles = start;
+    let mut stall = Stall::new(chain, target);
+    for iteration in 0..=s.max_iterations {
+        let pose = chain.forward(angles, side);
+        let (distance, arc) = chain.residual(pose, target);
+        if distance <= s.tolerance && arc.abs() <= s.tolerance {
+            return Iterated { angles, iterations: iteration };
+        }
+        if iteration == s.max_iterations || stall.stalled(distance.hypot(arc)) {
+            return Iterated { angles, iterations: iteration };
+        }
+        angles = step(angles, pose);
+    }
+    Iterated { angles, iterations: s.max_iterations }
 }
 
 /// A leg's solver with its memory: the previous frame's angles (warm start) and, for the
