@@ -17,6 +17,12 @@
 //! −21°, heel rise 30° past its curve). A candidate needing more than
 //! [`HEEL_RISE_SLACK_DEG`] of extra heel rise beyond what the fixed rule's position needs
 //! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
+//!
+//! Downhill the same push can come without extra heel rise: once the pelvis kept its speed
+//! through its keys, the slope_down walk's optimum moved the pelvis far forward and extended
+//! the trailing hip to 35.7° (normal gait: 10–20°; its fixed rule: 11.8°). A candidate asking
+//! more than [`HIP_EXTENSION_SLACK_DEG`] of hip extension beyond the fixed rule's is
+//! infeasible too ([`StepProblem::hip_extension_allowance`]).
 
 use crate::model::body::Side;
 use crate::model::params::{CostForm, OptimiserParams, SearchMethod};
@@ -28,6 +34,10 @@ use crate::model::walk::{Walker, solve_leg};
 /// Extra heel rise past the curve (deg) that a candidate may ask of a stance leg beyond what
 /// the fixed rule's position asks (the default walk's fixed rule asks about 1.4°).
 pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
+
+/// Hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed rule's
+/// position asks.
+pub const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 
 /// One evaluated pelvis position.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -130,6 +140,9 @@ pub struct StepProblem {
     /// The most extra heel rise (rad) a candidate may ask of a stance leg: the fixed rule's
     /// own plus [`HEEL_RISE_SLACK_DEG`] (set by [`StepProblem::with_allowance`]).
     pub heel_rise_allowance: f64,
+    /// The most hip extension (rad, positive) a candidate may ask of a stance leg: the fixed
+    /// rule's own plus [`HIP_EXTENSION_SLACK_DEG`].
+    pub hip_extension_allowance: f64,
     /// The fixed rule's cost, found while setting the allowance (`None` if it cannot reach).
     pub fixed_rule_cost: Option<f64>,
     /// The pelvis pose at each sample of the window, but for its forward position and height,
@@ -157,14 +170,16 @@ impl StepProblem {
     #[must_use]
     pub fn with_allowance(mut self, walker: &Walker) -> StepProblem {
         self.heel_rise_allowance = f64::INFINITY;
+        self.hip_extension_allowance = f64::INFINITY;
         // The cache pays for itself from the second evaluation on; with the optimiser off the
         // fixed rule's is the only one.
         if self.settings.enabled {
             let plan = self.plan.clone();
             self.orientations = self.sample_phases().map(|phase| walker.pelvis_with_plan(&plan, phase)).collect();
         }
-        let (cost, fixed_rule_extra) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
+        let (cost, fixed_rule_extra, fixed_rule_extension) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
         self.heel_rise_allowance = fixed_rule_extra.max(0.0) + HEEL_RISE_SLACK_DEG.to_radians();
+        self.hip_extension_allowance = fixed_rule_extension + HIP_EXTENSION_SLACK_DEG.to_radians();
         self.fixed_rule_cost = cost;
         self
     }
@@ -184,10 +199,11 @@ impl StepProblem {
         (self.settings.samples as usize / 2).max(3)
     }
 
-    /// The cost (as [`StepProblem::cost`]) and the most extra heel rise a stance leg needed
-    /// before the simulation ended (rad).
-    fn simulate(&self, walker: &Walker, x: f64, y: f64) -> (Option<f64>, f64) {
+    /// The cost (as [`StepProblem::cost`]), and the most extra heel rise and the most hip
+    /// extension a stance leg needed before the simulation ended (rad).
+    fn simulate(&self, walker: &Walker, x: f64, y: f64) -> (Option<f64>, f64, f64) {
         let mut most_extra: f64 = 0.0;
+        let mut most_extension = f64::NEG_INFINITY;
         let mut plan = self.plan.clone();
         let key = plan.last_of_mut(KeyKind::DoubleSupport).expect("the problem's plan has its key");
         key.x = x;
@@ -220,10 +236,15 @@ impl StepProblem {
                 let target = walker.target_of(&leg, phase, hip);
                 most_extra = most_extra.max(target.extra_heel_rise);
                 if hip.distance(target.ankle) > limit || target.extra_heel_rise > self.heel_rise_allowance {
-                    return (None, most_extra);
+                    return (None, most_extra, most_extension);
                 }
                 let pose = solve_leg(r, hip, target);
-                angles.push(sagittal_leg_angles(pelvis.rotation, &pose));
+                let sagittal = sagittal_leg_angles(pelvis.rotation, &pose);
+                most_extension = most_extension.max(-sagittal[0]);
+                if -sagittal[0] > self.hip_extension_allowance {
+                    return (None, most_extra, most_extension);
+                }
+                angles.push(sagittal);
             }
             total += acceleration_cost(&angles, step * r.cycle_s, weights, s.cost);
         }
@@ -231,9 +252,9 @@ impl StepProblem {
         let strike = self.landing.cycle_start;
         let hip = walker.pelvis_with_plan(&plan, strike).hip(self.landing.side.sign());
         if hip.distance(walker.target_of(&self.landing, strike, hip).ankle) > limit {
-            return (None, most_extra);
+            return (None, most_extra, most_extension);
         }
-        (Some(total), most_extra)
+        (Some(total), most_extra, most_extension)
     }
 
     /// Samples the cost over the whole forward range at the problem's height (for plots).

@@ -72,12 +72,14 @@ pub struct JointLimits {
 
 impl Default for JointLimits {
     /// Active ranges of healthy adults (AAOS): hip 120° flexion, 30° extension, 45° abduction,
-    /// 30° adduction, 45° internal and external rotation; knee 0–140°.
+    /// 30° adduction, 45° internal and external rotation; knee 0–140°. The leg frame does not
+    /// tilt with the pelvis, so extension is counted from the vertical: with the walk's ~10°
+    /// of anterior pelvic tilt, 40° from the vertical is the anatomical 30°.
     fn default() -> Self {
         let r = f64::to_radians;
         JointLimits {
             enabled: true,
-            hip_flex: (r(-30.0), r(120.0)),
+            hip_flex: (r(-40.0), r(120.0)),
             hip_abd: (r(-30.0), r(45.0)),
             hip_rot: (r(-45.0), r(45.0)),
             knee_flex: (0.0, r(140.0)),

@@ -261,7 +261,7 @@ impl Walker {
         walker.plan.push(ms_left);
         let ds = walker.double_support_key(&left, &right, 0.0, &ms_left, &ms_right);
         walker.plan.push(ds);
-        walker.plan.push(ms_right);
+        walker.plan.push(PelvisKey { pace: ds.pace, ..ms_right });
         walker.guard_stance_reach(Side::Right, 0.0, None);
         walker.evaluate_now();
         Ok(walker)
@@ -525,6 +525,7 @@ impl Walker {
             x: footfall.heel.x + r.midstance_offset,
             y: footfall.heel.y + r.dims.standing_hip_height() - r.midstance_drop,
             kind: KeyKind::MidStance,
+            pace: r.stride_m,
         }
     }
 
@@ -547,6 +548,9 @@ impl Walker {
             x: 0.5 * (ms_before.x + ms_after.x),
             y: ground + r.dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
             kind: KeyKind::DoubleSupport,
+            // This step's own average pace, so a change of speed or a stair spreads over the
+            // steps it happens in instead of being caught up within one segment.
+            pace: (ms_after.x - ms_before.x) / (ms_after.phase - ms_before.phase),
         }
     }
 
@@ -582,6 +586,7 @@ impl Walker {
             height_range: (ds.y - 0.03, ds.y + 0.01),
             settings,
             heel_rise_allowance: f64::INFINITY,
+            hip_extension_allowance: f64::INFINITY,
             fixed_rule_cost: None,
             orientations: Vec::new(),
         };
@@ -757,7 +762,7 @@ impl Walker {
         let ms_after = self.midstance_key(&to, strike_phase);
         let ds = self.double_support_key(&other, &to, strike_phase, &ms_before, &ms_after);
         self.plan.push(ds);
-        self.plan.push(ms_after);
+        self.plan.push(PelvisKey { pace: ds.pace, ..ms_after });
         let landing = LegState {
             side,
             phase: LegPhase::LoadingResponse,

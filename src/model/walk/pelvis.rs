@@ -32,6 +32,9 @@ pub struct PelvisKey {
     pub y: f64,
     /// DS or MS.
     pub kind: KeyKind,
+    /// The walk's nominal forward pace when the key was planned (m per cycle: the stride):
+    /// the pelvis passes the key at this pace times the design curve's slope there.
+    pub pace: f64,
 }
 
 /// The planned keys, oldest first.
@@ -92,14 +95,25 @@ impl PelvisPlan {
     }
 
     /// Forward position and height at `phase`.
+    ///
+    /// The pelvis passes every key at the pace planned with it times the design curve's slope
+    /// there, so its forward speed is continuous from segment to segment. Scaling the design
+    /// curve to a segment's distance alone would not do that: the end slopes match only when
+    /// neighbouring segments cover their distances at the same average speed, and a chosen
+    /// double-support position or uneven ground makes them differ (the speed jumped by up to
+    /// half the walking speed at a key on a steep slope). The difference is added as
+    /// `d₀·u(1 − u)² − d₁·u²(1 − u)`, zero at both keys, which sets the end slopes and nothing
+    /// else; it depends only on the segment's own two keys, so no segment changes shape once
+    /// the pelvis is in it.
     #[must_use]
     pub fn position(&self, phase: f64, curves: &TrajectoryCurves) -> (f64, f64) {
         let (a, b, u) = self.bracket(phase);
-        let forward = match a.kind {
-            KeyKind::DoubleSupport => &curves.forward_ds_ms,
-            KeyKind::MidStance => &curves.forward_ms_ds,
-        };
-        let x = a.x + (b.x - a.x) * forward.eval(u);
+        let forward = curves.forward(a.kind);
+        let (dx, dp) = (b.x - a.x, b.phase - a.phase);
+        let d0 = forward.slope(0.0) * (a.pace * dp - dx);
+        let d1 = forward.slope(1.0) * (b.pace * dp - dx);
+        let w = 1.0 - u;
+        let x = a.x + dx * forward.eval(u) + d0 * u * w * w - d1 * u * u * w;
         let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
         (x, y)
     }
@@ -114,6 +128,17 @@ pub struct TrajectoryCurves {
     pub forward_ms_ds: Curve,
     /// Height progress between two keys.
     pub vertical: Curve,
+}
+
+impl TrajectoryCurves {
+    /// The forward curve of the segment that starts at a key of `kind`.
+    #[must_use]
+    pub fn forward(&self, kind: KeyKind) -> &Curve {
+        match kind {
+            KeyKind::DoubleSupport => &self.forward_ds_ms,
+            KeyKind::MidStance => &self.forward_ms_ds,
+        }
+    }
 }
 
 /// The pelvis at one instant.
@@ -167,15 +192,40 @@ mod tests {
     #[test]
     fn passes_through_keys_and_is_fastest_at_double_support() {
         let mut plan = PelvisPlan::default();
-        plan.push(PelvisKey { phase: 0.0, x: 0.0, y: 0.90, kind: KeyKind::MidStance });
-        plan.push(PelvisKey { phase: 0.25, x: 0.35, y: 0.86, kind: KeyKind::DoubleSupport });
-        plan.push(PelvisKey { phase: 0.5, x: 0.70, y: 0.90, kind: KeyKind::MidStance });
+        plan.push(PelvisKey { phase: 0.0, x: 0.0, y: 0.90, kind: KeyKind::MidStance, pace: 1.4 });
+        plan.push(PelvisKey { phase: 0.25, x: 0.35, y: 0.86, kind: KeyKind::DoubleSupport, pace: 1.4 });
+        plan.push(PelvisKey { phase: 0.5, x: 0.70, y: 0.90, kind: KeyKind::MidStance, pace: 1.4 });
         let c = curves();
         assert_eq!(plan.position(0.25, &c), (0.35, 0.86));
         let speed = |p: f64| (plan.position(p + 1e-4, &c).0 - plan.position(p - 1e-4, &c).0) / 2e-4;
         assert!(speed(0.25) > speed(0.01) * 1.2, "{} {}", speed(0.25), speed(0.01));
         let (_, y_mid) = plan.position(0.125, &c);
         assert!(y_mid > 0.86 && y_mid < 0.90);
+    }
+
+    #[test]
+    fn forward_speed_is_continuous_at_keys_whatever_the_distances() {
+        // Uneven segments: 0.30 m then 0.40 m in equal times, as a chosen double support
+        // off the midpoint makes them.
+        let mut plan = PelvisPlan::default();
+        plan.push(PelvisKey { phase: 0.0, x: 0.0, y: 0.90, kind: KeyKind::MidStance, pace: 1.4 });
+        plan.push(PelvisKey { phase: 0.25, x: 0.30, y: 0.86, kind: KeyKind::DoubleSupport, pace: 1.4 });
+        plan.push(PelvisKey { phase: 0.5, x: 0.70, y: 0.90, kind: KeyKind::MidStance, pace: 1.4 });
+        plan.push(PelvisKey { phase: 0.75, x: 1.05, y: 0.86, kind: KeyKind::DoubleSupport, pace: 1.4 });
+        let c = curves();
+        let h = 1e-7;
+        let left = |p: f64| (plan.position(p, &c).0 - plan.position(p - h, &c).0) / h;
+        let right = |p: f64| (plan.position(p + h, &c).0 - plan.position(p, &c).0) / h;
+        for key in [0.25, 0.5] {
+            assert!((left(key) - right(key)).abs() < 1e-4, "at {key}: {} vs {}", left(key), right(key));
+        }
+        // At the pace times the design slope: 1.4 m/cycle x 1.12 at double support.
+        assert!((right(0.25) - 1.4 * 1.12).abs() < 1e-4, "{}", right(0.25));
+        // Keys are still passed through exactly, and the pelvis never goes backward.
+        assert_eq!(plan.position(0.5, &c).0, 0.70);
+        for i in 0..100 {
+            assert!(right(0.75 * f64::from(i) / 100.0) > 0.5);
+        }
     }
 
     #[test]
