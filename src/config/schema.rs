@@ -308,6 +308,8 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(optimiser => weight_hip, "", 0.0, 100.0, "Weight of the hip's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_knee, "", 0.0, 100.0, "Weight of the knee's squared angular acceleration in the pelvis choice"),
     real!(optimiser => weight_ankle, "", 0.0, 100.0, "Weight of the ankle's squared angular acceleration in the pelvis choice"),
+    real!(optimiser => heel_rise_slack_deg, "deg", 0.0, 30.0, "A candidate may roll the trailing foot this much further over its toes than the fixed rule does (the cost alone favours a stiff push-off)"),
+    real!(optimiser => hip_extension_slack_deg, "deg", 0.0, 30.0, "A candidate may extend the trailing hip this much further than the fixed rule does (the cost alone favours a hyper-extended push-off)"),
     ParamSpec {
         key: "terrain.kind",
         unit: "",

@@ -31,12 +31,15 @@ use crate::model::walk::leg::LegState;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose};
 use crate::model::walk::{Walker, solve_leg};
 
-/// Extra heel rise past the curve (deg) that a candidate may ask of a stance leg beyond what
-/// the fixed rule's position asks (the default walk's fixed rule asks about 1.4°).
+/// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
+/// beyond what the fixed rule's position asks (the default walk's fixed rule asks about
+/// 1.4°); `optimiser.heel_rise_slack_deg`.
 pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
 
-/// Hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed rule's
-/// position asks.
+/// Default hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed
+/// rule's position asks; `optimiser.hip_extension_slack_deg`. At 2° the default walk's
+/// optimiser keeps the fixed rule every step (its whole gain comes from a longer push-off);
+/// at 5° it saves 43 % of the cost with 24.9° of hip extension (fixed rule: 21.0°).
 pub const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 
 /// One evaluated pelvis position.
@@ -178,8 +181,8 @@ impl StepProblem {
             self.orientations = self.sample_phases().map(|phase| walker.pelvis_with_plan(&plan, phase)).collect();
         }
         let (cost, fixed_rule_extra, fixed_rule_extension) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
-        self.heel_rise_allowance = fixed_rule_extra.max(0.0) + HEEL_RISE_SLACK_DEG.to_radians();
-        self.hip_extension_allowance = fixed_rule_extension + HIP_EXTENSION_SLACK_DEG.to_radians();
+        self.heel_rise_allowance = fixed_rule_extra.max(0.0) + self.settings.heel_rise_slack_deg.to_radians();
+        self.hip_extension_allowance = fixed_rule_extension + self.settings.hip_extension_slack_deg.to_radians();
         self.fixed_rule_cost = cost;
         self
     }

@@ -247,6 +247,8 @@ pub struct OptimiserParams {
     pub weight_hip: f64,
     pub weight_knee: f64,
     pub weight_ankle: f64,
+    pub heel_rise_slack_deg: f64,
+    pub hip_extension_slack_deg: f64,
 }
 
 /// The kind of ground in `[terrain]`.
@@ -384,6 +386,8 @@ impl Default for WalkParams {
                 weight_hip: 1.0,
                 weight_knee: 1.0,
                 weight_ankle: 1.0,
+                heel_rise_slack_deg: crate::model::optimise::HEEL_RISE_SLACK_DEG,
+                hip_extension_slack_deg: crate::model::optimise::HIP_EXTENSION_SLACK_DEG,
             },
             terrain: TerrainParams {
                 kind: TerrainChoice::Flat,
