@@ -14,12 +14,19 @@ struct Session {
 }
 
 fn start(args: &[&str]) -> Session {
+    start_with_env(args, &[])
+}
+
+fn start_with_env(args: &[&str], env: &[(&str, &str)]) -> Session {
     let pty = native_pty_system();
     let pair = pty.openpty(PtySize { rows: 24, cols: 80, pixel_width: 0, pixel_height: 0 }).expect("a pty");
     let mut cmd = CommandBuilder::new(env!("CARGO_BIN_EXE_gaitlab"));
     cmd.args(args);
     cmd.cwd(env!("CARGO_MANIFEST_DIR"));
     cmd.env("TERM", "xterm-256color");
+    for (key, value) in env {
+        cmd.env(key, value);
+    }
     let child = pair.slave.spawn_command(cmd).expect("the binary starts");
     drop(pair.slave);
     let mut reader = pair.master.try_clone_reader().unwrap();
@@ -157,4 +164,18 @@ fn paused_and_idle_the_lab_writes_nothing() {
     s.send(b"q");
     assert_eq!(s.wait_exit(), 0);
     s.assert_restored();
+}
+
+#[test]
+fn a_panic_in_the_lab_still_restores_the_terminal_and_reports_it() {
+    let mut s = start_with_env(&[], &[("GAITLAB_TEST_PANIC", "1")]);
+    let code = s.wait_exit();
+    assert_ne!(code, 0, "a panic is a failure");
+    s.assert_restored();
+    // The message comes after the restore, on the normal screen where the user sees it.
+    let text = String::from_utf8_lossy(&s.output.lock().unwrap()).into_owned();
+    let message = text.find("GAITLAB_TEST_PANIC is set").expect("the panic message is printed");
+    let before = &text[..message];
+    assert!(before.rfind("\x1b[?1049l") > before.rfind("\x1b[?1049h"), "printed after leaving the alternate screen");
+    assert!(s.screen().screen().contents().contains("GAITLAB_TEST_PANIC is set"), "and visible");
 }

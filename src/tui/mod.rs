@@ -145,11 +145,15 @@ fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result
     let mut dirty = true;
     let mut drawn_this_second = 0u32;
     let mut second_started = Instant::now();
+    // A way to panic on purpose, so that the restore-on-panic path can be tested through a
+    // real terminal (`tests/tui_pty.rs`); nothing else sets it.
+    let panic_for_test = std::env::var_os("GAITLAB_TEST_PANIC").is_some();
     while !app.quit && !stop.load(Ordering::Relaxed) {
         if dirty {
             draw(&mut terminal, app, options.marker)?;
             dirty = false;
             drawn_this_second += 1;
+            assert!(!panic_for_test, "GAITLAB_TEST_PANIC is set: panicking after the first frame");
         }
         let walking = !app.paused;
         // Idle: wake once a second only to notice a signal; nothing is drawn. A report being
