@@ -173,13 +173,13 @@ fn write_tables(
     writeln!(out)?;
     writeln!(
         out,
-        "{:<13} {:>8} {:>12} {:>12} {:>10} {:>10} {:>8}",
+        "{:<13} {:>11} {:>12} {:>12} {:>10} {:>10} {:>8}",
         "solver", "reached", "err max mm", "knee max deg", "iter mean", "us/solve", "limits"
     )?;
     for (solver, s) in rows {
         writeln!(
             out,
-            "{:<13} {:>8} {:>12.4} {:>12.4} {:>10.2} {:>10.2} {:>8}",
+            "{:<13} {:>11} {:>12.4} {:>12.4} {:>10.2} {:>10.2} {:>8}",
             solver.name(),
             format!("{}/{}", s.reached, s.solves),
             s.position_error_max_mm,
