@@ -216,3 +216,30 @@ fn limits_off_with_random_restarts_report_no_spurious_violations() {
     let gradient = run_solver(&targets, IkSolverKind::Gradient, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets);
     assert_eq!(gradient.limit_violations, analytic.limit_violations, "{gradient:?}");
 }
+
+#[test]
+fn the_walk_honours_the_analytic_solvers_twist_and_soften() {
+    let base = presets::params("default").unwrap().unwrap();
+    let plain = run(&base, 2.0, 60.0).unwrap();
+    // Twist turns each knee about its hip-ankle line; the feet stay where they were.
+    let mut twisted = base.clone();
+    twisted.ik.twist_deg = 20.0;
+    let turned = run(&twisted, 2.0, 60.0).unwrap();
+    let c = checks(&turned.frames);
+    assert!(c.foot_skate_mm <= 0.5 && turned.reach_failures == 0, "{c:?}");
+    let mut most_turn: f64 = 0.0;
+    for (a, b) in plain.frames.iter().zip(&turned.frames) {
+        for side in 0..2 {
+            let (la, lb) = (&a.legs[side], &b.legs[side]);
+            assert!(la.ankle.distance(lb.ankle) < 1e-9, "the ankle is not moved by the twist");
+            most_turn = most_turn.max(la.knee_swivel.angle_between(lb.knee_swivel).to_degrees());
+        }
+    }
+    assert!((most_turn - 20.0).abs() < 0.01, "knees turned by {most_turn} deg");
+    // Soften pulls a stretched leg's ankle in short of its target: counted as not reached.
+    let mut softened = base.clone();
+    softened.ik.soften = 0.9;
+    let soft = run(&softened, 2.0, 60.0).unwrap();
+    assert!(soft.reach_failures > 0, "the stance leg runs past 90 % of its reach");
+    assert!(soft.frames.iter().all(|f| f.legs.iter().all(|l| l.knee.is_finite())));
+}

@@ -15,7 +15,7 @@ pub mod upper;
 use crate::model::body::{Bone, Pose, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::ik::{IkAnswer, IkQuestion, LegSolver, TwoBoneSolution, solve_two_bone};
+use crate::model::ik::{IkAnswer, IkQuestion, LegSolver, TwoBoneOptions, TwoBoneSolution, solve_two_bone_with};
 use crate::model::optimise::{Candidate, StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
@@ -1212,7 +1212,10 @@ pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
     // The walking direction turned by the foot's yaw: Ry(yaw)·x.
     let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
     let reference = DVec3::new(cos_yaw, 0.0, -sin_yaw);
-    let ik = solve_two_bone(hip, target.ankle, dims.thigh, dims.shank, reference);
+    // The analytic solver's soften and twist apply to the walk too (both off by default, when
+    // this is exactly the plain law-of-cosines solve).
+    let options = TwoBoneOptions { soften: r.ik.soften, twist: r.ik.twist };
+    let ik = solve_two_bone_with(hip, target.ankle, dims.thigh, dims.shank, reference, options);
     leg_pose(r, hip, target, &ik)
 }
 
