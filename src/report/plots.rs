@@ -540,17 +540,40 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
         walker.advance(1.0 / d.run.fps);
     }
     if let (Some(problem), Some(plan)) = (walker.last_step_problem(), walker.step_plans().last()) {
-        let land = problem.landscape(&walker, 81);
-        let (lo, _) = problem.range;
+        let mut land = problem.landscape(&walker, 81);
+        let (lo, hi) = problem.range;
+        // The feasible band is often a few centimetres of a range tens of centimetres wide:
+        // then the plot shows the band (with one unreachable sample each side), sampled as
+        // finely, so the valley the search works in is visible.
+        let (mut x_from, mut x_to) = (lo, hi);
+        let feasible_x: Vec<f64> = land.iter().filter(|c| c.cost.is_some()).map(|c| c.x).collect();
+        if let (Some(&first), Some(&last)) = (feasible_x.first(), feasible_x.last()) {
+            let step = (hi - lo) / 80.0;
+            if last - first < 0.25 * (hi - lo) {
+                x_from = (first - 1.5 * step).max(lo);
+                x_to = (last + 1.5 * step).min(hi);
+                land = (0..=80)
+                    .map(|i| {
+                        let x = x_from + (x_to - x_from) * f64::from(i) / 80.0;
+                        crate::model::optimise::Candidate {
+                            x,
+                            y: problem.ds.y,
+                            cost: problem.cost(&walker, x, problem.ds.y),
+                        }
+                    })
+                    .collect();
+            }
+        }
         let feasible: Vec<(f64, f64)> = land.iter().filter_map(|c| c.cost.map(|k| ((c.x - lo) * 100.0, k))).collect();
-        let span = (problem.range.1 - problem.range.0) * 100.0;
+        let x_axis = (x_from - lo) * 100.0..((x_to - lo) * 100.0).max((x_from - lo) * 100.0 + 1e-6);
         let y = y_range(&[feasible.as_slice()]);
+        let zoomed = if (x_from, x_to) == (lo, hi) { String::new() } else { " (feasible band)".to_string() };
         let mut chart = ChartBuilder::on(&left)
-            .caption(format!("cost landscape, step {}", plan.step), (FONT, 30))
+            .caption(format!("cost landscape, step {}{zoomed}", plan.step), (FONT, 30))
             .margin(12)
             .x_label_area_size(55)
             .y_label_area_size(90)
-            .build_cartesian_2d(0f64..span.max(1e-6), y.clone())
+            .build_cartesian_2d(x_axis, y.clone())
             .map_err(err)?;
         chart
             .configure_mesh()
@@ -626,7 +649,7 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
     chart
         .configure_mesh()
         .x_desc("step")
-        .y_desc("cost")
+        .y_desc("cost (rad^2/s^3)")
         .label_style((FONT, 18))
         .axis_desc_style((FONT, 20))
         .draw()
