@@ -543,8 +543,8 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
         let mut land = problem.landscape(&walker, 81);
         let (lo, hi) = problem.range;
         // The feasible band is often a few centimetres of a range tens of centimetres wide:
-        // then the plot shows the band (with one unreachable sample each side), sampled as
-        // finely, so the valley the search works in is visible.
+        // then the plot shows the band (with one unreachable sample each side), sampled at 41
+        // points, so the valley the search works in is visible.
         let (mut x_from, mut x_to) = (lo, hi);
         let feasible_x: Vec<f64> = land.iter().filter(|c| c.cost.is_some()).map(|c| c.x).collect();
         if let (Some(&first), Some(&last)) = (feasible_x.first(), feasible_x.last()) {
@@ -552,9 +552,9 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
             if last - first < 0.25 * (hi - lo) {
                 x_from = (first - 1.5 * step).max(lo);
                 x_to = (last + 1.5 * step).min(hi);
-                land = (0..=80)
+                land = (0..=40)
                     .map(|i| {
-                        let x = x_from + (x_to - x_from) * f64::from(i) / 80.0;
+                        let x = x_from + (x_to - x_from) * f64::from(i) / 40.0;
                         crate::model::optimise::Candidate {
                             x,
                             y: problem.ds.y,
