@@ -203,7 +203,10 @@ fn turning_the_optimiser_off_walks_the_fixed_rule_and_shows_what_the_optimiser_s
         rs[2..].iter().map(|r| if chosen { r.chosen.cost.unwrap() } else { r.fixed_rule.cost.unwrap() }).sum()
     };
     let (optimised, fixed) = (sum(&on, true), sum(&off, true));
-    assert!(optimised < 0.9 * fixed, "optimised {optimised} vs fixed rule {fixed}");
+    // Measured 2026-11-23: 5.4 % lower. (Before the trailing leg eased into its reach limit,
+    // its knee locked with a corner that the 50 samples saw as a spike depending on where it
+    // fell between them, and the optimiser "saved" up to 43 % by placing it there.)
+    assert!(optimised < 0.97 * fixed, "optimised {optimised} vs fixed rule {fixed}");
     // With the optimiser on, each record still carries the fixed rule's cost, and on a steady
     // flat walk it matches the walk that follows the rule.
     assert!((sum(&on, false) - fixed).abs() < 0.01 * fixed, "{} vs {fixed}", sum(&on, false));
@@ -221,4 +224,44 @@ fn the_same_config_makes_the_same_choices_on_every_run() {
     };
     let params = load("rough", &["optimiser.method=\"brent\""]);
     assert_eq!(strip(records(&params, 10)), strip(records(&params, 10)));
+}
+
+#[test]
+fn the_cost_is_smooth_across_the_feasible_band_not_a_sawtooth_of_sample_alignments() {
+    for name in ["default", "rough", "slope_up"] {
+        let params = gaitlab::config::presets::params(name).unwrap().unwrap();
+        for (walker, problem) in problems(&params, 3) {
+            let problem = problem.with_allowance(&walker);
+            // The feasible band, finely.
+            let (lo, hi) = problem.range;
+            let xs: Vec<f64> = (0..=400).map(|i| lo + (hi - lo) * f64::from(i) / 400.0).collect();
+            let costs: Vec<(f64, f64)> =
+                xs.iter().filter_map(|&x| problem.cost(&walker, x, problem.ds.y).map(|c| (x, c))).collect();
+            if costs.len() < 8 {
+                continue;
+            }
+            // Minima that matter: lowest within three samples each side (all feasible and
+            // contiguous) and at least 2 % below the highest of them.
+            let step = (hi - lo) / 400.0;
+            let mut minima = 0;
+            for i in 3..costs.len().saturating_sub(3) {
+                let window = &costs[i - 3..=i + 3];
+                let contiguous = window[6].0 - window[0].0 < 6.5 * step;
+                let lowest = window.iter().all(|c| c.1 >= costs[i].1);
+                let depth = window.iter().map(|c| c.1).fold(f64::MIN, f64::max) - costs[i].1;
+                if contiguous && lowest && depth > 0.02 * costs[i].1 {
+                    minima += 1;
+                }
+            }
+            // A sawtooth (the stance knee locking between samples) made one minimum every
+            // ~0.7 cm: 3–5 across a default band.
+            let shown: Vec<String> = costs.iter().map(|c| format!("{:.0}", c.1)).collect();
+            assert!(
+                minima <= 1,
+                "{name}: {minima} local minima across {} feasible samples: {}",
+                costs.len(),
+                shown.join(" ")
+            );
+        }
+    }
 }

@@ -311,7 +311,17 @@ impl StepProblem {
             // Where both neighbours of the coarse best are infeasible the feasible band is
             // narrower than the first level's spacing, and the thesis's grid is what finds
             // its lowest point (measured: a section search there ended up to 47 % higher).
-            let budget = (0..m).filter(|k| ((*k as f64 + 0.5) / m as f64 - 0.5).abs() > 1e-12).count();
+            // The budget is what the thesis's second level would newly evaluate here: its
+            // points, clamped to the range, less those already costed or repeated.
+            let mut fresh: Vec<f64> = Vec::new();
+            for k in 0..m {
+                let x = (coarse.x + spacing * ((k as f64 + 0.5) / m as f64 - 0.5)).clamp(lo, hi);
+                let known = memo.done.iter().any(|c| (c.x - x).abs() < 1e-9 && (c.y - y0).abs() < 1e-9);
+                if !known && !fresh.iter().any(|f| (f - x).abs() < 1e-9) {
+                    fresh.push(x);
+                }
+            }
+            let budget = fresh.len();
             let b = (coarse.x, coarse.cost.unwrap_or(f64::INFINITY));
             section(&mut |x| memo.at(x, y0), [a, b, c], budget, s.method == SearchMethod::Brent, tol);
             return memo.done;

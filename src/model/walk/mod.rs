@@ -15,7 +15,9 @@ pub mod upper;
 use crate::model::body::{Bone, Pose, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::ik::{IkAnswer, IkQuestion, LegSolver, TwoBoneOptions, TwoBoneSolution, solve_two_bone_with};
+use crate::model::ik::{
+    IkAnswer, IkQuestion, LegSolver, TwoBoneOptions, TwoBoneSolution, softened_distance, solve_two_bone_with,
+};
 use crate::model::optimise::{Candidate, StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
@@ -103,6 +105,10 @@ pub struct StepPlan {
     /// The step's foot-pitch curve (deg) as adapted.
     pub swing_ankle_deg: Curve,
 }
+
+/// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
+/// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
+const REACH_EASE: f64 = 0.995;
 
 /// A walking body.
 #[derive(Clone, Debug)]
@@ -439,12 +445,23 @@ impl Walker {
                     |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
                 let limit = r.reach_margin * dims.leg_reach();
                 let mut angle = curve_angle;
-                if hip.distance(ankle_at(angle)) > limit {
-                    // The hip has moved past what the curve's heel rise lets the leg reach: roll
-                    // further over the toes, just enough.
-                    if let Some(reaching) = heel_rise_to_reach(leg.anchor, ff, dims.ball_local(), hip, limit, angle) {
-                        angle = reaching;
-                    }
+                // The hip moving past what the curve's heel rise lets the leg reach makes the
+                // foot roll further over the toes. Not by clamping the leg at its limit — that
+                // pins the knee with a corner in every joint's angle, which the optimiser's
+                // squared accelerations then see as a spike wherever it falls between two
+                // samples — but eased in: from REACH_EASE of the limit on, the hip-ankle
+                // distance follows the softening curve that approaches the limit with slope 1
+                // at its start, ramped in over the first tenth of the phase so that nothing
+                // jumps when heel rise begins.
+                let d0 = hip.distance(ankle_at(angle));
+                let ramp = (s / 0.1).clamp(0.0, 1.0);
+                let ramp = ramp * ramp * (3.0 - 2.0 * ramp);
+                let eased = d0 - ramp * (d0 - softened_distance(d0, limit, REACH_EASE));
+                let wanted = eased.min(limit);
+                if d0 > wanted + 1e-12
+                    && let Some(reaching) = heel_rise_to_reach(leg.anchor, ff, dims.ball_local(), hip, wanted, angle)
+                {
+                    angle = reaching;
                 }
                 LegTarget {
                     ankle: ankle_at(angle),
