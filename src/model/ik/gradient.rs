@@ -22,8 +22,8 @@ struct Problem<'a> {
     tolerance_mm: f64,
 }
 
-/// Cost and whether the pose is within tolerance, for angles in degrees.
 impl Problem<'_> {
+    /// The cost (mm²) and whether the pose is within the tolerance, for angles in degrees.
     fn cost(&self, deg: [f64; 4]) -> (f64, bool) {
         let angles = LegAngles::from_array(deg.map(f64::to_radians));
         let (distance, arc) = self.chain.residual(self.chain.forward(angles, self.side), self.target);
