@@ -2,7 +2,8 @@
 //!
 //! The walk is run once with the analytic solver and every leg's IK question (hip, ankle
 //! target, reference vector) is kept. Each solver then answers the whole sequence, one leg at a
-//! time in frame order, warm-starting from its previous answer as it would in the walk.
+//! time in frame order, warm-starting from its previous answer as it would in the walk. (A
+//! report keeps the questions of the walk it reports, whatever its solver, while running it.)
 //!
 //! Metrics, after seed 002's three (tracker distance, angle difference, inter-frame jump):
 //! - **position error**: ankle to target (mm), max and mean over all solves;
@@ -16,10 +17,11 @@
 //!   the same leg (mm), max (with the frame) and mean — the analytic row is the walk's own
 //!   motion, so a solver's excess over it is its jitter.
 
+use crate::analysis::{Run, run_observed};
 use crate::model::body::Side;
 use crate::model::ik::{IkAnswer, IkQuestion, IkSettings, IkSolverKind, LegSolver};
 use crate::model::params::WalkParams;
-use crate::model::walk::{ModelError, Walker, ik_question};
+use crate::model::walk::{ModelError, ik_question};
 use std::time::Instant;
 
 /// One IK question the walk asked.
@@ -39,13 +41,13 @@ pub struct IkTarget {
 pub fn collect_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<Vec<IkTarget>, ModelError> {
     let mut reference = params.clone();
     reference.ik.solver = IkSolverKind::Analytic;
-    let mut walker = Walker::new(&reference)?;
-    let count = (cycles * walker.resolved().cycle_s * fps).round() as u64;
-    let mut targets = Vec::with_capacity(2 * count as usize + 2);
-    for frame in 0..=count {
-        if frame > 0 {
-            walker.advance(1.0 / fps);
-        }
+    Ok(run_with_targets(&reference, cycles, fps)?.1)
+}
+
+/// Runs the walk as configured and keeps both legs' IK questions of every frame beside it.
+pub fn run_with_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<(Run, Vec<IkTarget>), ModelError> {
+    let mut targets = Vec::new();
+    let run = run_observed(params, cycles, fps, |walker, frame| {
         for side in Side::BOTH {
             let pose = &walker.leg(side).pose;
             targets.push(IkTarget {
@@ -55,8 +57,8 @@ pub fn collect_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<Vec
                 question: ik_question(pose.hip, pose.target, side),
             });
         }
-    }
-    Ok(targets)
+    })?;
+    Ok((run, targets))
 }
 
 /// One solve of one target.

@@ -37,14 +37,27 @@ pub struct Run {
 
 /// Runs `cycles` gait cycles at `fps` frames per second.
 pub fn run(params: &WalkParams, cycles: f64, fps: f64) -> Result<Run, ModelError> {
+    run_observed(params, cycles, fps, |_, _| {})
+}
+
+/// [`run`], showing the walker to `observe` after every frame (frame 0 included), so a caller
+/// can keep what the frames do not record without walking a second time.
+pub fn run_observed(
+    params: &WalkParams,
+    cycles: f64,
+    fps: f64,
+    mut observe: impl FnMut(&Walker, u64),
+) -> Result<Run, ModelError> {
     let mut walker = Walker::new(params)?;
     let cycle_s = walker.resolved().cycle_s;
     let count = (cycles * cycle_s * fps).round() as u64;
     let mut frames = Vec::with_capacity(count as usize + 1);
     frames.push(walker.frame(0));
+    observe(&walker, 0);
     for i in 1..=count {
         walker.advance(1.0 / fps);
         frames.push(walker.frame(i));
+        observe(&walker, i);
     }
     Ok(Run {
         frames,

@@ -68,7 +68,10 @@ pub const FILES: &[&str] = &[
 /// `progress` receives a line per stage.
 pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Summary, String> {
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
-    let run = analysis::run(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
+    // The IK targets are kept as the walk is run: the report's IK section measures the
+    // solvers on the questions this very walk asked.
+    let (run, ik_targets) =
+        ik::run_with_targets(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
     let summary = metrics::summarise(&run).map_err(|e| e.to_string())?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
@@ -82,8 +85,6 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         "solving the walk's IK targets with {}",
         solvers.iter().map(|s| s.name()).collect::<Vec<_>>().join(", ")
     ));
-    let ik_targets =
-        ik::collect_targets(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
     let resolved = input.params.resolve();
     let ik_runs: Vec<SolverRun> = solvers
         .iter()

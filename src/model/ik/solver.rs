@@ -318,29 +318,11 @@ impl LegSolver {
         LegSolver { settings, chain, side_sign, warm: None, rng: SplitMix64::new(settings.gradient.seed ^ stream) }
     }
 
-    /// The settings in use.
-    #[must_use]
-    pub fn settings(&self) -> &IkSettings {
-        &self.settings
-    }
-
-    /// The chain solved.
-    #[must_use]
-    pub fn chain(&self) -> &LegChain {
-        &self.chain
-    }
-
     /// Changes the settings, keeping the previous frame's answer to start from.
     pub fn set_settings(&mut self, settings: IkSettings) {
         let warm = self.warm;
         *self = LegSolver::new(settings, self.chain.thigh, self.chain.shank, self.side_sign);
         self.warm = warm;
-    }
-
-    /// Forgets the previous frame: the next solve starts cold (and the gradient solver restarts).
-    pub fn reset(&mut self) {
-        self.warm = None;
-        self.rng = LegSolver::new(self.settings, self.chain.thigh, self.chain.shank, self.side_sign).rng;
     }
 
     /// Solves one question, warm-starting from the previous answer.

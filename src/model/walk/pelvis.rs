@@ -32,8 +32,9 @@ pub struct PelvisKey {
     pub y: f64,
     /// DS or MS.
     pub kind: KeyKind,
-    /// The walk's nominal forward pace when the key was planned (m per cycle: the stride):
-    /// the pelvis passes the key at this pace times the design curve's slope there.
+    /// Forward pace the pelvis passes the key with, times the design curve's slope there
+    /// (m per cycle): its step's average, mid-stance to mid-stance; the walk's nominal stride
+    /// for the first key.
     pub pace: f64,
 }
 
