@@ -1,6 +1,6 @@
 //! `gaitlab ik`: every IK solver on the walk's own targets, side by side.
 
-use super::{ExitCode, load_config};
+use super::{ExitCode, load_config, stdout_written};
 use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
 use crate::model::ik::{IkSettings, IkSolverKind};
 use serde_json::json;
@@ -80,14 +80,7 @@ pub(super) fn run(
     } else {
         write_tables(&mut out, path, &r.ik, targets.len(), cycles, fps, &rows)
     };
-    match written.and_then(|()| out.flush()) {
-        Ok(()) => 0,
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => 0,
-        Err(e) => {
-            eprintln!("gaitlab ik: cannot write to stdout: {e}");
-            1
-        }
-    }
+    stdout_written("ik", written.and_then(|()| out.flush()))
 }
 
 /// What a solver's own settings are, in one line.

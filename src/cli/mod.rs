@@ -143,6 +143,19 @@ pub enum Command {
     },
 }
 
+/// The exit code of a command that wrote its output to stdout: a reader that went away (a
+/// closed pipe, `| head`) is not a failure; any other write error is.
+fn stdout_written(command: &str, written: io::Result<()>) -> ExitCode {
+    match written {
+        Ok(()) => 0,
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => 0,
+        Err(e) => {
+            eprintln!("gaitlab {command}: cannot write to stdout: {e}");
+            1
+        }
+    }
+}
+
 /// Prints config problems to stderr.
 fn report_config_errors(errors: &ConfigErrors) {
     for e in &errors.0 {

@@ -1,6 +1,6 @@
 //! `gaitlab optimise`: the per-step pelvis choices of a walk, as a table or JSON lines.
 
-use super::{ExitCode, load_config};
+use super::{ExitCode, load_config, stdout_written};
 use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
@@ -32,14 +32,7 @@ pub(super) fn run(path: &Path, steps: Option<u32>, json: bool, sets: &[String]) 
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let written = if json { write_json(&mut out, &records) } else { write_table(&mut out, path, &params, &records) };
-    match written.and_then(|()| out.flush()) {
-        Ok(()) => 0,
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => 0,
-        Err(e) => {
-            eprintln!("gaitlab optimise: cannot write to stdout: {e}");
-            1
-        }
-    }
+    stdout_written("optimise", written.and_then(|()| out.flush()))
 }
 
 /// Walks until `steps` pelvis choices have been made.
