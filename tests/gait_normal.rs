@@ -266,21 +266,20 @@ fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
         }
         let (changed, changed_jerk) = (max_steps(&frames), max_speed_changes(&frames));
         for i in 0..4 {
-            // No jump in any joint's speed beyond what a landing at the new pace brings: the
-            // largest is the knee at the first heel strike after the change, 12.3°/frame²
-            // against 9.1 anywhere in the steady walks. (Before the pelvis kept its speed
-            // through keys, the steady walks themselves reached 15.7 and a change 15.1.)
+            // No jump in any joint's speed: the largest after a change is the knee's,
+            // 9.6°/frame² against 9.1 anywhere in the steady walks (before the trailing leg
+            // eased into its reach limit it was 12.3; before the pelvis kept its speed through
+            // keys the steady walks themselves reached 15.7).
             assert!(
-                changed_jerk[i] <= usual_jerk[i] * 1.4,
+                changed_jerk[i] <= usual_jerk[i] * 1.1,
                 "joint {i}: {:.3}°/frame² after a change at {change_at} vs usual {:.3}",
                 changed_jerk[i],
                 usual_jerk[i]
             );
-            // ...and no joint much faster than either walk: the pelvis carries its speed
-            // through the change and catches up over the next segment (the knee at the next
-            // heel strike is the fastest, 9.7 against 7.6°/frame; before, 12.0 against 12.3).
+            // ...and no joint faster than in either walk by more than a tenth: the knee at
+            // the next heel strike is the fastest, 7.9 against 7.6°/frame.
             assert!(
-                changed[i] <= usual[i] * 1.3,
+                changed[i] <= usual[i] * 1.1,
                 "joint {i}: {:.3}°/frame after a change at {change_at} vs usual {:.3}",
                 changed[i],
                 usual[i]
