@@ -160,9 +160,10 @@ fn a_failed_report_leaves_no_folder_and_bad_input_exits_2() {
     let blocker = temp("blocker");
     std::fs::write(&blocker, "a file, not a folder").unwrap();
     let out_dir = blocker.join("report");
+    // A file where a folder of the path should be: refused before the walk, as bad input.
     let out = gaitlab(&["report", "configs/default.toml", "--out", out_dir.to_str().unwrap(), "--cycles", "3"]);
-    assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot create"));
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is a regular file, not a folder"));
     assert!(!out_dir.exists());
     std::fs::remove_file(&blocker).unwrap();
 

@@ -392,15 +392,17 @@ fn the_embedded_default_saves_to_a_typed_path_and_a_bad_path_is_reported_inline(
     key(&mut app, KeyCode::Char('s'));
     let Some(Overlay::SavePath { text, .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
     assert_eq!(text, "my_walk.toml");
-    // Clear it and type a path in a folder that does not exist: the error stays in the box.
+    // Clear it and type a path under a file (missing folders would be created, a file in
+    // the way cannot be): the error stays in the box.
     for _ in 0..text.len() {
         key(&mut app, KeyCode::Backspace);
     }
-    let bad = dir.join("missing/sub/walk.toml");
+    std::fs::write(dir.join("notes.txt"), "a file").unwrap();
+    let bad = dir.join("notes.txt/sub/walk.toml");
     keys(&mut app, &bad.display().to_string());
     key(&mut app, KeyCode::Enter);
     let Some(Overlay::SavePath { error: Some(error), .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
-    assert!(error.contains("not saved"), "{error}");
+    assert!(error.contains("not saved") && error.contains("notes.txt is a regular file, not a folder"), "{error}");
     assert!(app.is_modified() && app.path.is_none(), "a failed save changes nothing");
     assert!(!bad.exists());
     // Now a good path.

@@ -3,7 +3,7 @@
 use crate::config::{self, ConfigErrors, presets, render};
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
-use crate::output::{joint_table, write_atomic};
+use crate::output::{self, FileTarget, joint_table};
 use clap::{Parser, Subcommand};
 
 mod ik;
@@ -72,7 +72,8 @@ pub enum Command {
         /// Frames per second [default: the config's sim.fps]
         #[arg(long)]
         fps: Option<f64>,
-        /// Write the CSV here (atomically) instead of to stdout
+        /// Write the CSV here instead of to stdout: a regular file is replaced atomically
+        /// (keeping its mode), a device or FIFO is written through, - is stdout
         #[arg(long)]
         out: Option<PathBuf>,
         /// Override a key: --set walk.speed_mps=1.4 (repeatable)
@@ -97,9 +98,13 @@ pub enum Command {
     Report {
         /// Config file.
         config: PathBuf,
-        /// Report folder [default: reports/<config stem>]
+        /// Report folder [default: reports/<config stem>]; a previous report there is replaced,
+        /// any other folder is refused
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Replace a previous report even if it holds files a report does not write
+        #[arg(long)]
+        force: bool,
         /// Gait cycles to simulate [default: the config's sim.cycles]
         #[arg(long)]
         cycles: Option<u32>,
@@ -181,8 +186,8 @@ pub fn run(cli: Cli) -> ExitCode {
             simulate(&config, cycles, fps, out.as_deref(), &sets)
         }
         Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
-        Some(Command::Report { config, out, cycles, compare, ik_solvers, sets }) => {
-            report(&config, out.as_deref(), cycles, &compare, ik_solvers.as_deref(), &sets)
+        Some(Command::Report { config, out, force, cycles, compare, ik_solvers, sets }) => {
+            report(&config, out.as_deref(), force, cycles, &compare, ik_solvers.as_deref(), &sets)
         }
         Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
             ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets)
@@ -209,6 +214,7 @@ fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
 fn report(
     path: &Path,
     out: Option<&Path>,
+    force: bool,
     cycles: Option<u32>,
     compare: &[PathBuf],
     ik_solvers: Option<&str>,
@@ -248,6 +254,17 @@ fn report(
         }
     }
     let out = out.map_or_else(|| crate::report::default_out(path), Path::to_path_buf);
+    let target = match crate::report::resolve_out(&out, force) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("gaitlab report: {e}");
+            return e.exit_code();
+        }
+    };
+    if let Err(e) = output::pending::remove_on_signal() {
+        eprintln!("gaitlab report: cannot watch signals: {e}");
+        return 1;
+    }
     let input = crate::report::ReportInput {
         name: path.file_stem().map_or("config".into(), |s| s.to_string_lossy().into_owned()),
         source_text: &source_text,
@@ -263,14 +280,14 @@ fn report(
             eprintln!("gaitlab report: {stage}");
         }
     };
-    match crate::report::write_report(&input, &out, &mut progress) {
+    match crate::report::write_report(&input, &target, &mut progress) {
         Ok(_) => {
             println!("{}", out.display());
             0
         }
         Err(e) => {
             eprintln!("gaitlab report: {e}");
-            1
+            e.exit_code()
         }
     }
 }
@@ -304,6 +321,13 @@ fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Pat
         eprintln!("gaitlab simulate: --cycles {cycles} is out of range; valid: 1 to 100000");
         return 2;
     }
+    let target = match out.map_or(Ok(FileTarget::Stdout), FileTarget::resolve) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("gaitlab simulate: {e}");
+            return e.exit_code();
+        }
+    };
     let mut walker = match Walker::new(&params) {
         Ok(w) => w,
         Err(e) => {
@@ -325,20 +349,15 @@ fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Pat
         }
         out.flush()
     };
-    let result = match out {
-        Some(file) => write_atomic(file, write).map_err(|e| format!("cannot write {}: {e}", file.display())),
-        None => {
-            let stdout = io::stdout();
-            let mut lock = io::BufWriter::new(stdout.lock());
-            write(&mut lock).map_err(|e| format!("cannot write to stdout: {e}"))
-        }
-    };
-    match result {
+    if let Err(e) = output::pending::remove_on_signal() {
+        eprintln!("gaitlab simulate: cannot watch signals: {e}");
+        return 1;
+    }
+    match output::write_file(&target, &mut write) {
         Ok(()) => 0,
-        Err(e) if e.contains("Broken pipe") => 0,
         Err(e) => {
             eprintln!("gaitlab simulate: {e}");
-            1
+            e.exit_code()
         }
     }
 }

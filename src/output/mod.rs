@@ -1,37 +1,72 @@
-//! Files gaitlab writes: the joint table, and the atomic write every file goes through.
+//! Files gaitlab writes, and the one way every writer puts them on disk.
+//!
+//! The rule every output follows (CSV, report folders, BVH, plots, saved configs, recovery
+//! files), in [`target`] and [`folder`]:
+//!
+//! - A regular file, or nothing, at the target is replaced atomically (temp file beside it,
+//!   flushed, renamed over it) and keeps its mode and, where permitted, its owner.
+//! - A character device or a FIFO (`/dev/null`, `/dev/stdout`, a named pipe) is written
+//!   through and never replaced; `-` means standard output.
+//! - Anything else — a block device, a socket, a folder where a file is expected, a file
+//!   where a folder is expected, a dangling link, a regular file with other hard links (a
+//!   rename would split them) — is refused with [`OutputError::Refused`] (exit 2) before any
+//!   work is done.
+//! - Missing parent folders are created (one rule for every command), and removed again if
+//!   the write fails.
+//! - Temp files and partial folders are registered in [`pending`] and removed on every
+//!   failure path and on SIGINT / SIGTERM / SIGHUP; stale ones left by a killed run (their
+//!   PID is dead) are swept by the next write to the same place.
 
 pub mod bvh;
+pub mod folder;
 pub mod joint_table;
+pub mod pending;
+pub mod target;
 
-use std::fs::{self, File};
-use std::io::{self, Write};
+pub use folder::{FolderTarget, write_folder};
+pub use target::{FileTarget, write_file};
+
+use std::fmt;
+use std::io;
 use std::path::Path;
-use std::sync::atomic::{AtomicU64, Ordering};
 
-static TEMP_COUNTER: AtomicU64 = AtomicU64::new(0);
+/// Why an output could not be written.
+#[derive(Debug)]
+pub enum OutputError {
+    /// The target is not something gaitlab may write (exit 2): nothing was touched.
+    Refused(String),
+    /// Writing failed part-way (exit 1): temps were removed, the target is as it was.
+    Failed(String),
+}
 
-/// Writes `path` so that it is either the old file or the whole new one, never half of it:
-/// the bytes go to a temporary file beside it, are flushed to disk, and the temporary file
-/// is renamed over `path`. The temporary file is removed if anything fails.
-pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> io::Result<()> {
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "not a file path"))?;
-    let temp = dir.join(format!(
-        ".{}.tmp-{}-{}",
-        name.to_string_lossy(),
-        std::process::id(),
-        TEMP_COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    let result = (|| {
-        let file = File::create(&temp)?;
-        let mut out = io::BufWriter::new(file);
-        write(&mut out)?;
-        let file = out.into_inner().map_err(io::IntoInnerError::into_error)?;
-        file.sync_all()?;
-        fs::rename(&temp, path)
-    })();
-    if result.is_err() {
-        let _ = fs::remove_file(&temp);
+impl OutputError {
+    /// The exit code for this error: 2 for a refused target (bad input), 1 for a failure.
+    #[must_use]
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            OutputError::Refused(_) => 2,
+            OutputError::Failed(_) => 1,
+        }
     }
-    result
+
+    pub(crate) fn io(path: &Path, what: &str, e: &io::Error) -> Self {
+        OutputError::Failed(format!("cannot {what} {}: {e}", path.display()))
+    }
+}
+
+impl fmt::Display for OutputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OutputError::Refused(m) | OutputError::Failed(m) => f.write_str(m),
+        }
+    }
+}
+
+impl std::error::Error for OutputError {}
+
+/// Writes `path` so that it is either the old file or the whole new one, never half of it
+/// (see the module's rule for what else may sit at `path`).
+pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn io::Write) -> io::Result<()>) -> Result<(), OutputError> {
+    let target = FileTarget::resolve(path)?;
+    write_file(&target, write)
 }

@@ -14,7 +14,7 @@ use crate::model::ik::IkSolverKind;
 use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
 use crate::model::walk::Walker;
-use crate::output::joint_table;
+use crate::output::{self, FolderTarget, OutputError, joint_table};
 use metrics::{LABELS, Summary};
 use std::fmt::Write as _;
 use std::fs;
@@ -64,20 +64,30 @@ pub const FILES: &[&str] = &[
     "walk.bvh",
 ];
 
-/// Writes the report into `out` (replacing a previous one only once the new one is whole).
-/// `progress` receives a line per stage.
-pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Summary, String> {
+/// Decides where a report may go (see [`output::folder`]), before any walking is done.
+pub fn resolve_out(out: &Path, force: bool) -> Result<FolderTarget, OutputError> {
+    FolderTarget::resolve(out, FILES, force)
+}
+
+/// Writes the report into `target` (replacing a previous report only once the new one is
+/// whole). `progress` receives a line per stage.
+pub fn write_report(
+    input: &ReportInput<'_>,
+    target: &FolderTarget,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Summary, OutputError> {
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
     // The IK targets are kept as the walk is run: the report's IK section measures the
     // solvers on the questions this very walk asked.
-    let (run, ik_targets) =
-        ik::run_with_targets(input.params, f64::from(input.cycles), input.fps).map_err(|e| e.to_string())?;
-    let summary = metrics::summarise(&run).map_err(|e| e.to_string())?;
+    let (run, ik_targets) = ik::run_with_targets(input.params, f64::from(input.cycles), input.fps)
+        .map_err(|e| OutputError::Failed(e.to_string()))?;
+    let summary = metrics::summarise(&run).map_err(|e| OutputError::Failed(e.to_string()))?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
         progress(&format!("simulating {name} for comparison"));
-        let run = analysis::run(params, f64::from(input.cycles), input.fps).map_err(|e| format!("{name}: {e}"))?;
-        let summary = metrics::summarise(&run).map_err(|e| format!("{name}: {e}"))?;
+        let run = analysis::run(params, f64::from(input.cycles), input.fps)
+            .map_err(|e| OutputError::Failed(format!("{name}: {e}")))?;
+        let summary = metrics::summarise(&run).map_err(|e| OutputError::Failed(format!("{name}: {e}")))?;
         others.push((name.clone(), params, run, summary));
     }
     let solvers = input.ik_solvers();
@@ -90,17 +100,11 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
         .iter()
         .map(|&solver| ik::run_solver(&ik_targets, solver, &resolved.ik, resolved.dims.thigh, resolved.dims.shank))
         .collect();
-    let terrain = Walker::new(input.params).map_err(|e| e.to_string())?.terrain().clone();
-    let parent = out.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
-    let name = out.file_name().ok_or_else(|| format!("{}: not a folder name", out.display()))?.to_string_lossy();
-    let temp = parent.join(format!(".{name}.partial-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&temp);
-    let result = (|| -> Result<(), String> {
-        fs::create_dir_all(&temp).map_err(|e| format!("cannot create {}: {e}", temp.display()))?;
+    let terrain = Walker::new(input.params).map_err(|e| OutputError::Failed(e.to_string()))?.terrain().clone();
+    output::write_folder(target, FILES, |temp| {
         let file = |rel: &str| temp.join(rel);
         let write = |rel: &str, text: &str| {
-            fs::write(file(rel), text).map_err(|e| format!("cannot write {}: {e}", out.join(rel).display()))
+            fs::write(file(rel), text).map_err(|e| format!("cannot write {}: {e}", target.path.join(rel).display()))
         };
         progress("writing tables");
         write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
@@ -125,19 +129,7 @@ pub fn write_report(input: &ReportInput<'_>, out: &Path, progress: &mut dyn FnMu
             ik_runs.iter().map(|run| (run.solver, run.summary(&ik_targets))).collect();
         write("summary.md", &summary_md(input, &summary, &compared, &ik_summaries))?;
         Ok(())
-    })();
-    if let Err(e) = result {
-        let _ = fs::remove_dir_all(&temp);
-        return Err(e);
-    }
-    // Swap the finished folder in: the old one (if any) is moved aside first, as a folder
-    // cannot be renamed over a non-empty one.
-    let old = parent.join(format!(".{name}.old-{}", std::process::id()));
-    if out.exists() {
-        fs::rename(out, &old).map_err(|e| format!("cannot replace {}: {e}", out.display()))?;
-    }
-    fs::rename(&temp, out).map_err(|e| format!("cannot move the report to {}: {e}", out.display()))?;
-    let _ = fs::remove_dir_all(&old);
+    })?;
     Ok(summary)
 }
 

@@ -657,6 +657,15 @@ impl App {
         let stem =
             self.path.as_ref().and_then(|p| p.file_stem()).map_or("lab".into(), |s| s.to_string_lossy().into_owned());
         let out = self.export_dir.join(&stem);
+        // Checked before the walk is run: a folder that is not a previous report is never
+        // replaced, and the lab says why at once.
+        let target = match crate::report::resolve_out(&out, false) {
+            Ok(t) => t,
+            Err(e) => {
+                self.message = Some(format!("report not written: {e}"));
+                return;
+            }
+        };
         let params = self.params.clone();
         let source = self.source_text.clone();
         let cycles = params.sim.cycles.max(3);
@@ -675,7 +684,8 @@ impl App {
             let mut progress = |stage: &str| {
                 let _ = progress_tx.send(ExportMsg::Progress(stage.to_string()));
             };
-            let result = crate::report::write_report(&input, &out, &mut progress).map(|_| out);
+            let result =
+                crate::report::write_report(&input, &target, &mut progress).map(|_| out).map_err(|e| e.to_string());
             let _ = tx.send(ExportMsg::Done(result));
         });
         self.export = Some(rx);

@@ -94,6 +94,18 @@ pub fn run(options: &Options) -> i32 {
         }
     };
     app.show_timings = true;
+    // Checked before a single escape code is written: output redirected to a file must get
+    // none of them.
+    {
+        use std::io::IsTerminal;
+        if !io::stdin().is_terminal() || !io::stdout().is_terminal() {
+            let which = if io::stdout().is_terminal() { "standard input" } else { "standard output" };
+            eprintln!(
+                "gaitlab: the lab needs a terminal, and {which} is not one; for output without one use `gaitlab simulate` or `gaitlab report`"
+            );
+            return 2;
+        }
+    }
     // SIGTERM, SIGHUP (the SSH link dropped) and SIGINT end the loop like `q` without asking.
     let stop = Arc::new(AtomicBool::new(false));
     for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP, signal_hook::consts::SIGINT] {

@@ -1,5 +1,6 @@
 //! Saving the lab's edits into the user's TOML: only the edited keys change, comments and
-//! layout stay (toml_edit), and the file is replaced atomically (temp file + rename).
+//! layout stay (toml_edit), and the file is replaced by the output rule (atomically, keeping its mode; see
+//! [`crate::output`]).
 
 use crate::model::params::WalkParams;
 use crate::output::write_atomic;
@@ -9,8 +10,7 @@ use std::path::Path;
 /// and saves the result at `path`. Returns the text written.
 pub fn save(path: &Path, source_text: &str, params: &WalkParams, keys: &[&str]) -> Result<String, String> {
     let text = edited_text(source_text, params, keys)?;
-    write_atomic(path, |out| out.write_all(text.as_bytes()))
-        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    write_atomic(path, |out| out.write_all(text.as_bytes())).map_err(|e| e.to_string())?;
     Ok(text)
 }
 
