@@ -84,6 +84,13 @@ pub enum Overlay {
     },
     /// Quit with unsaved edits?
     ConfirmQuit,
+    /// A lab on this config was cut off with unsaved edits: load them, or discard them?
+    Recovery {
+        /// The recovery file and its text.
+        found: super::recovery::Found,
+        /// Why loading it failed, if it did.
+        error: Option<String>,
+    },
     /// Choosing from a list.
     Pick {
         /// What is picked.
@@ -641,6 +648,15 @@ impl App {
         }
     }
 
+    /// What `s` would write now, if anything is unsaved: the text a recovery file keeps.
+    #[must_use]
+    pub fn unsaved_text(&self) -> Option<String> {
+        if !self.is_modified() {
+            return None;
+        }
+        save::edited_text(&self.source_text, &self.params, &self.changed_keys()).ok()
+    }
+
     /// Whether a report is being written.
     #[must_use]
     pub fn exporting(&self) -> bool {
@@ -820,6 +836,25 @@ impl App {
                     self.overlay = Some(Overlay::SavePath { text, error });
                 }
                 _ => self.overlay = Some(Overlay::SavePath { text, error }),
+            },
+            Overlay::Recovery { found, error } => match key.code {
+                KeyCode::Char('l') => match config::load_text(&found.text, &found.path.display().to_string(), &[]) {
+                    Ok(params) => {
+                        self.apply(params, format!("recovered the unsaved edits of {}", found.age), true);
+                        let _ = std::fs::remove_file(&found.path);
+                    }
+                    Err(e) => {
+                        self.overlay = Some(Overlay::Recovery { found, error: Some(e.to_string()) });
+                    }
+                },
+                KeyCode::Char('d') => {
+                    let _ = std::fs::remove_file(&found.path);
+                    self.message = Some(format!("discarded {}", found.path.display()));
+                }
+                KeyCode::Esc => {
+                    self.message = Some(format!("kept {} for later", found.path.display()));
+                }
+                _ => self.overlay = Some(Overlay::Recovery { found, error }),
             },
             Overlay::Pick { what, items, mut selected } => match key.code {
                 KeyCode::Esc => {}

@@ -7,8 +7,10 @@
 
 pub mod app;
 pub mod keys;
+pub mod recovery;
 pub mod save;
 pub mod ui;
+pub mod watch;
 
 use crate::config::{self, presets};
 use app::App;
@@ -23,8 +25,6 @@ use ratatui::crossterm::{cursor, execute};
 use ratatui::symbols::Marker;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// How the lab is started.
@@ -54,12 +54,15 @@ pub fn load_app(config: Option<&Path>, sets: &[String]) -> Result<App, String> {
             let keymap = keys::KeyMap::from_config(&text, &path.display().to_string())?;
             let mut app = App::new(params, text, Some(path.to_path_buf()))?;
             app.keymap = keymap;
+            app.overlay = recovery::find(Some(path)).map(|found| app::Overlay::Recovery { found, error: None });
             Ok(app)
         }
         None => {
             let params =
                 config::load_text(presets::default_text(), "(embedded default)", sets).map_err(|e| e.to_string())?;
-            App::new(params, presets::default_text().to_string(), None)
+            let mut app = App::new(params, presets::default_text().to_string(), None)?;
+            app.overlay = recovery::find(None).map(|found| app::Overlay::Recovery { found, error: None });
+            Ok(app)
         }
     }
 }
@@ -96,24 +99,20 @@ pub fn run(options: &Options) -> i32 {
     app.show_timings = true;
     // Checked before a single escape code is written: output redirected to a file must get
     // none of them.
-    {
-        use std::io::IsTerminal;
-        if !io::stdin().is_terminal() || !io::stdout().is_terminal() {
-            let which = if io::stdout().is_terminal() { "standard input" } else { "standard output" };
-            eprintln!(
-                "gaitlab: the lab needs a terminal, and {which} is not one; for output without one use `gaitlab simulate` or `gaitlab report`"
-            );
-            return 2;
-        }
+    if let Some(why) = watch::terminal_error() {
+        eprintln!(
+            "gaitlab: the lab needs a terminal, and {why}; for output without one use `gaitlab simulate` or `gaitlab report`"
+        );
+        return 2;
     }
-    // SIGTERM, SIGHUP (the SSH link dropped) and SIGINT end the loop like `q` without asking.
-    let stop = Arc::new(AtomicBool::new(false));
-    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP, signal_hook::consts::SIGINT] {
-        if let Err(e) = signal_hook::flag::register(signal, Arc::clone(&stop)) {
-            eprintln!("gaitlab: cannot watch signal {signal}: {e}");
+    // Signals and a lost terminal are watched on a thread of its own (see `watch`).
+    let watch = match watch::Watch::start(recovery::path_for(options.config.as_deref())) {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("gaitlab: cannot watch the terminal and signals: {e}");
             return 1;
         }
-    }
+    };
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
         restore_terminal();
@@ -125,8 +124,15 @@ pub fn run(options: &Options) -> i32 {
         return 1;
     }
     let guard = TerminalGuard;
-    let result = event_loop(&mut app, options, &stop);
+    let result = event_loop(&mut app, options, &watch);
+    if !watch.stop_requested() {
+        // Quit on purpose: whatever was left unsaved was the user's choice.
+        watch.publish(None);
+    }
+    watch.loop_done();
     drop(guard);
+    // A report still being written by the export thread leaves no partial folder.
+    crate::output::pending::remove_all();
     match result {
         Ok(()) => 0,
         Err(e) => {
@@ -146,7 +152,7 @@ where
     Write::flush(terminal.backend_mut())
 }
 
-fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result<()> {
+fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Result<()> {
     let backend = CrosstermBackend::new(BufWriter::with_capacity(1 << 16, io::stdout()));
     let mut terminal = Terminal::new(backend)?;
     // Not `terminal.clear()`: it asks the terminal for the cursor position first, and a
@@ -160,7 +166,9 @@ fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result
     // A way to panic on purpose, so that the restore-on-panic path can be tested through a
     // real terminal (`tests/tui_pty.rs`); nothing else sets it.
     let panic_for_test = std::env::var_os("GAITLAB_TEST_PANIC").is_some();
-    while !app.quit && !stop.load(Ordering::Relaxed) {
+    // What the recovery file would hold changes with the edits and with each save.
+    let mut published = (app.params.clone(), app.saved.clone());
+    while !app.quit && !watch.stop_requested() {
         if dirty {
             draw(&mut terminal, app, options.marker)?;
             dirty = false;
@@ -195,6 +203,10 @@ fn event_loop(app: &mut App, options: &Options, stop: &AtomicBool) -> io::Result
                     break;
                 }
             }
+        }
+        if app.params != published.0 || app.saved != published.1 {
+            published = (app.params.clone(), app.saved.clone());
+            watch.publish(app.unsaved_text());
         }
         dirty |= app.poll_export();
         let now = Instant::now();

@@ -290,6 +290,22 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
                 r,
             );
         }
+        Overlay::Recovery { found, error } => {
+            let mut lines = vec![
+                Line::raw(format!("A lab on this config was cut off {} with unsaved edits,", found.age)),
+                Line::raw(format!("kept in {}.", found.path.display())),
+                Line::styled("l: load them   d: discard them   esc: decide later", Style::new().fg(Color::Yellow)),
+            ];
+            if let Some(e) = error {
+                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
+            }
+            let r = centered(area, 76, lines.len() as u16 + 4);
+            f.render_widget(Clear, r);
+            f.render_widget(
+                Paragraph::new(lines).wrap(Wrap { trim: true }).block(Block::bordered().title(" Unsaved edits found ")),
+                r,
+            );
+        }
         Overlay::Pick { what, items, selected } => {
             let title = match what {
                 PickKind::Preset => " Preset (enter: load, esc: cancel) ",
