@@ -328,3 +328,54 @@ fn ik_prints_a_table_per_solver_and_json_lines_and_names_bad_solvers() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("ik.solver"), "{}", text(&out.stderr));
 }
+
+/// Run lengths at the extremes are refused with the valid range, before any work.
+#[test]
+fn run_lengths_at_the_extremes_are_refused_with_the_range() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["simulate", "--cycles", "0"], "valid: 1 to 100000"),
+        (&["simulate", "--cycles", "1000000000"], "valid: 1 to 100000"),
+        (&["simulate", "--cycles=-1"], "invalid value '-1'"),
+        (&["simulate", "--fps", "0"], "valid: 10 to 1000"),
+        (&["simulate", "--fps", "nan"], "valid: 10 to 1000"),
+        (&["optimise", "--steps", "0"], "valid: 1 to 100000"),
+        (&["optimise", "--steps", "1000000000"], "valid: 1 to 100000"),
+        (&["optimise", "--steps=-5"], "invalid value '-5'"),
+        (&["report", "--cycles", "2"], "valid: 3 to 2000"),
+        (&["report", "--cycles", "1000000000"], "valid: 3 to 2000"),
+        (&["ik", "--cycles", "0"], "valid: 1 to 10000"),
+        (&["ik", "--cycles", "4294967296"], "invalid value '4294967296'"),
+    ];
+    for (args, expected) in cases {
+        let mut full = vec![args[0], "configs/default.toml"];
+        full.extend_from_slice(&args[1..]);
+        let started = std::time::Instant::now();
+        let o = gaitlab(&full);
+        assert_eq!(o.status.code(), Some(2), "{full:?}: {}", text(&o.stderr));
+        assert!(text(&o.stderr).contains(expected), "{full:?}: {}", text(&o.stderr));
+        assert!(started.elapsed().as_secs() < 5, "{full:?} was not refused at once");
+    }
+}
+
+/// A long simulate streams its rows and trims the walk's history: its peak memory does not
+/// grow with the run's length (before the trimming it grew ~2.6 KB a cycle).
+#[test]
+fn a_long_simulate_keeps_its_memory_flat() {
+    let peak_kb = |cycles: &str| -> i64 {
+        let child = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+            .args(["simulate", "configs/default.toml", "--cycles", cycles, "--out", "/dev/null"])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .spawn()
+            .unwrap();
+        let mut status = 0;
+        // SAFETY: a zeroed rusage is valid; wait4 fills it for this child only.
+        let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+        let pid = unsafe { libc::wait4(child.id() as libc::pid_t, &mut status, 0, &mut usage) };
+        assert_eq!(pid, child.id() as libc::pid_t);
+        assert_eq!(status, 0, "simulate --cycles {cycles} failed");
+        usage.ru_maxrss
+    };
+    let short = peak_kb("60");
+    let long = peak_kb("1500");
+    assert!(long < short + 1500, "peak {short} KB at 60 cycles, {long} KB at 1500");
+}

@@ -161,6 +161,42 @@ fn stdout_written(command: &str, written: io::Result<()>) -> ExitCode {
     }
 }
 
+/// A progress line on stderr for long runs, only when stderr is a terminal (scripts and
+/// pipes get nothing): rewritten in place at most twice a second, cleared at the end.
+struct Progress {
+    command: &'static str,
+    total: u64,
+    tty: bool,
+    started: std::time::Instant,
+    last: Option<std::time::Instant>,
+}
+
+impl Progress {
+    fn new(command: &'static str, total: u64) -> Self {
+        use std::io::IsTerminal;
+        Progress { command, total, tty: io::stderr().is_terminal(), started: std::time::Instant::now(), last: None }
+    }
+
+    fn at(&mut self, done: u64) {
+        // Checked every 1024 frames: the clock is not read on every row.
+        if !self.tty || done % 1024 != 0 || self.started.elapsed().as_secs_f64() < 1.0 {
+            return;
+        }
+        if self.last.is_some_and(|t| t.elapsed().as_secs_f64() < 0.5) {
+            return;
+        }
+        self.last = Some(std::time::Instant::now());
+        let pct = 100.0 * done as f64 / self.total.max(1) as f64;
+        eprint!("\rgaitlab {}: frame {done} of {} ({pct:.0} %)\x1b[K", self.command, self.total);
+    }
+
+    fn done(&self) {
+        if self.last.is_some() {
+            eprint!("\r\x1b[K");
+        }
+    }
+}
+
 /// Prints config problems to stderr.
 fn report_config_errors(errors: &ConfigErrors) {
     for e in &errors.0 {
@@ -233,9 +269,11 @@ fn report(
         }
     };
     let cycles = cycles.unwrap_or(params.sim.cycles);
-    if !(3..=100_000).contains(&cycles) {
+    // A report keeps every frame for its tables and plots: 1000 cycles are ~86 MB and 3 s,
+    // so the bound keeps a report within a few hundred MB (simulate streams any length).
+    if !(3..=2000).contains(&cycles) {
         eprintln!(
-            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 100000 (the first cycle is start-up)"
+            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 2000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)"
         );
         return 2;
     }
@@ -336,16 +374,21 @@ fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Pat
         }
     };
     let frames = (f64::from(cycles) * walker.resolved().cycle_s * fps).round() as u64;
+    let mut progress = Progress::new("simulate", frames);
     let mut write = |out: &mut dyn Write| -> io::Result<()> {
         joint_table::write_header(out)?;
         let mut line = String::with_capacity(512);
         for i in 0..=frames {
             if i > 0 {
                 walker.advance(1.0 / fps);
+                // Rows are streamed out; the plans behind them need not stay, so a long
+                // run's memory is flat (frames are the same with and without trimming).
+                walker.keep_recent_history(crate::model::walk::RECENT_STEPS);
             }
             joint_table::format_row(&walker.frame(i), &mut line);
             line.push('\n');
             out.write_all(line.as_bytes())?;
+            progress.at(i);
         }
         out.flush()
     };
@@ -353,7 +396,9 @@ fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Pat
         eprintln!("gaitlab simulate: cannot watch signals: {e}");
         return 1;
     }
-    match output::write_file(&target, &mut write) {
+    let result = output::write_file(&target, &mut write);
+    progress.done();
+    match result {
         Ok(()) => 0,
         Err(e) => {
             eprintln!("gaitlab simulate: {e}");

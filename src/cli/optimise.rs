@@ -41,11 +41,22 @@ fn walk_steps(params: &WalkParams, steps: usize) -> Result<Vec<StepRecord>, crat
     // A step is half a cycle; the bound only guards against a walk that stopped planning.
     let frame_limit = ((steps as f64 + 4.0) * walker.resolved().cycle_s * FPS) as u64;
     let mut frame = 0;
-    while walker.step_plans().len() < steps && frame < frame_limit {
+    let mut records = Vec::with_capacity(steps.min(4096));
+    // Only the records are kept: the walker's plans are trimmed as it goes, so a long run
+    // holds a record a step and nothing more.
+    let mut seen = i64::MIN;
+    while records.len() < steps && frame < frame_limit {
         walker.advance(1.0 / FPS);
         frame += 1;
+        for plan in walker.step_plans() {
+            if records.len() < steps && plan.step >= seen {
+                records.push(plan.optimisation.clone());
+                seen = plan.step + 1;
+            }
+        }
+        walker.keep_recent_history(8);
     }
-    Ok(walker.step_plans().iter().take(steps).map(|p| p.optimisation.clone()).collect())
+    Ok(records)
 }
 
 /// Summed costs over the steps, optimised and by the fixed rule.

@@ -18,10 +18,6 @@ use std::path::PathBuf;
 /// Simulation speeds offered by `[` and `]`.
 const SPEEDS: [f64; 6] = [0.125, 0.25, 0.5, 1.0, 2.0, 4.0];
 
-/// Steps of plans and footfalls the lab keeps: far more than the optimiser table and the walk
-/// view ever show.
-const LAB_HISTORY_STEPS: usize = 256;
-
 /// Joint-angle samples kept for the traces: three cycles at 60 samples a second is plenty.
 const TRACE_LEN: usize = 240;
 
@@ -333,7 +329,7 @@ impl App {
     fn advance(&mut self, dt: f64) {
         self.walker.advance(dt);
         // A lab left walking overnight would otherwise keep every step's plan (~60 000).
-        self.walker.keep_recent_history(LAB_HISTORY_STEPS);
+        self.walker.keep_recent_history(crate::model::walk::RECENT_STEPS);
         self.frame_count += 1;
         self.frame = self.walker.frame(self.frame_count);
         self.record_trace();

@@ -110,6 +110,10 @@ pub struct StepPlan {
 /// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
 const REACH_EASE: f64 = 0.995;
 
+/// Steps of plans and footfalls a long-running walk keeps when it trims its history (the lab,
+/// `simulate`): far more than the lab's optimiser table and walk view ever show.
+pub const RECENT_STEPS: usize = 256;
+
 /// A walking body.
 #[derive(Clone, Debug)]
 pub struct Walker {
