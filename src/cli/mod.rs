@@ -179,7 +179,7 @@ impl Progress {
 
     fn at(&mut self, done: u64) {
         // Checked every 1024 frames: the clock is not read on every row.
-        if !self.tty || done % 1024 != 0 || self.started.elapsed().as_secs_f64() < 1.0 {
+        if !self.tty || !done.is_multiple_of(1024) || self.started.elapsed().as_secs_f64() < 1.0 {
             return;
         }
         if self.last.is_some_and(|t| t.elapsed().as_secs_f64() < 0.5) {
