@@ -10,6 +10,7 @@
 //! - **stance %**: frames in which a leg is in one of its three stance phases, over frames;
 //! - **cycle**: heel strike to heel strike of the right leg; the first cycle is start-up.
 
+pub mod events;
 pub mod ik;
 
 use crate::model::body::Side;
@@ -197,8 +198,7 @@ pub struct CycleSummary {
 /// Splits `frames` into cycles at right heel strikes and summarises each complete one.
 #[must_use]
 pub fn cycle_summaries(frames: &[Frame]) -> Vec<CycleSummary> {
-    let starts: Vec<usize> =
-        (0..frames.len()).filter(|&i| i == 0 || frames[i].legs[0].phase < frames[i - 1].legs[0].phase).collect();
+    let starts: Vec<usize> = std::iter::once(0).chain(events::heel_strikes(frames, 0)).collect();
     starts.windows(2).enumerate().map(|(cycle, w)| summarise(cycle, &frames[w[0]..w[1]], &frames[w[1]])).collect()
 }
 

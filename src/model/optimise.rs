@@ -15,13 +15,13 @@
 //! acceleration at all, and the cost alone would drive the pelvis forward into a stiff,
 //! hyper-extended push-off (measured on the default walk: hip extension −37° instead of
 //! −21°, heel rise 30° past its curve). A candidate needing more than
-//! [`HEEL_RISE_SLACK_DEG`] of extra heel rise beyond what the fixed rule's position needs
+//! [`HEEL_RISE_SLACK_DEG`](crate::model::params::HEEL_RISE_SLACK_DEG) of extra heel rise beyond what the fixed rule's position needs
 //! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
 //!
 //! Downhill the same push can come without extra heel rise: once the pelvis kept its speed
 //! through its keys, the slope_down walk's optimum moved the pelvis far forward and extended
 //! the trailing hip to 35.7° (normal gait: 10–20°; its fixed rule: 11.8°). A candidate asking
-//! more than [`HIP_EXTENSION_SLACK_DEG`] of hip extension beyond the fixed rule's is
+//! more than [`HIP_EXTENSION_SLACK_DEG`](crate::model::params::HIP_EXTENSION_SLACK_DEG) of hip extension beyond the fixed rule's is
 //! infeasible too ([`StepProblem::hip_extension_allowance`]).
 
 use crate::model::body::Side;
@@ -30,18 +30,6 @@ use crate::model::walk::frame::sagittal_leg_angles;
 use crate::model::walk::leg::LegState;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose};
 use crate::model::walk::{Walker, solve_leg};
-
-/// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
-/// beyond what the fixed rule's position asks (the default walk's fixed rule asks about
-/// 1.4°); `optimiser.heel_rise_slack_deg`.
-pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
-
-/// Default hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed
-/// rule's position asks; `optimiser.hip_extension_slack_deg`. On the default walk (20 steps)
-/// a slack of 0 or 2° leaves the optimiser the fixed rule every step — its whole gain is a
-/// longer push-off — and 5° or 10° both save 5.4 % of the cost with 24.9° of hip extension
-/// (fixed rule: 21.0°).
-pub const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 
 /// One evaluated pelvis position.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,10 +6,22 @@
 //! docs onto these fields; the model never sees a key string.
 
 use crate::model::body::{BodyDims, Sex};
-use crate::model::ik::solver::GradientSettings;
+use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
+
+/// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
+/// beyond what the fixed rule's position asks (the default walk's fixed rule asks about
+/// 1.4°); `optimiser.heel_rise_slack_deg`.
+pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
+
+/// Default hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed
+/// rule's position asks; `optimiser.hip_extension_slack_deg`. Why 5°: with no slack the
+/// optimiser's whole gain on a flat walk would be a longer push-off, so it keeps the fixed
+/// rule; 5° lets it choose while keeping hip extension in the normal range (the measured
+/// trade-off is in benches/README.md, "optimiser allowances").
+pub const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 
 /// `[body]`.
 #[derive(Clone, Debug, PartialEq)]
@@ -386,8 +398,8 @@ impl Default for WalkParams {
                 weight_hip: 1.0,
                 weight_knee: 1.0,
                 weight_ankle: 1.0,
-                heel_rise_slack_deg: crate::model::optimise::HEEL_RISE_SLACK_DEG,
-                hip_extension_slack_deg: crate::model::optimise::HIP_EXTENSION_SLACK_DEG,
+                heel_rise_slack_deg: HEEL_RISE_SLACK_DEG,
+                hip_extension_slack_deg: HIP_EXTENSION_SLACK_DEG,
             },
             terrain: TerrainParams {
                 kind: TerrainChoice::Flat,

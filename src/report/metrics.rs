@@ -134,15 +134,10 @@ fn detrended_span(cycle: &[Frame], value: impl Fn(&Frame) -> f64) -> f64 {
     span(cycle.iter().map(|f| value(f) - (v0 + (v1 - v0) * (f.time_s - t0) / (t1 - t0))))
 }
 
-/// Right heel strikes: frame indices where the right leg's cycle phase wraps.
-fn right_strikes(frames: &[Frame]) -> Vec<usize> {
-    (1..frames.len()).filter(|&i| frames[i].legs[0].phase < frames[i - 1].legs[0].phase).collect()
-}
-
 /// The steady-state frame range of a run: `[first, last)` between the second and the last
 /// right heel strike.
 pub fn steady_range(frames: &[Frame]) -> Result<(usize, usize, Vec<usize>), TooShort> {
-    let strikes = right_strikes(frames);
+    let strikes = crate::analysis::events::heel_strikes(frames, 0);
     if strikes.len() < 3 {
         return Err(TooShort(format!(
             "the walk needs at least 3 right heel strikes to measure a steady cycle; this run has {} (simulate more cycles)",

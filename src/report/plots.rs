@@ -7,13 +7,13 @@
 //! (LHS), left toe-off (LTO).
 
 use crate::analysis::Run;
+use crate::analysis::events as gait_events;
 use crate::analysis::ik::{IkSample, IkTarget, SolverRun};
 use crate::model::body::{Bone, Side};
 use crate::model::gait_curves::CurveName;
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
 use crate::model::walk::frame::Frame;
-use crate::model::walk::leg::LegPhase;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -59,9 +59,7 @@ struct Data<'a> {
 }
 
 fn strikes_of(frames: &[Frame], side: usize) -> Vec<usize> {
-    let all: Vec<usize> =
-        (1..frames.len()).filter(|&i| frames[i].legs[side].phase < frames[i - 1].legs[side].phase).collect();
-    all.into_iter().skip(1).collect()
+    gait_events::heel_strikes(frames, side).into_iter().skip(1).collect()
 }
 
 impl<'a> Data<'a> {
@@ -81,12 +79,9 @@ impl<'a> Data<'a> {
             }
             if v.is_empty() { f64::NAN } else { v.iter().sum::<f64>() / v.len() as f64 }
         };
-        let toe_off = |s: usize| {
-            move |a: &Frame, b: &Frame| a.legs[s].leg_phase != LegPhase::Swing && b.legs[s].leg_phase == LegPhase::Swing
-        };
-        events.push(("RTO", pct_of(&toe_off(0))));
-        events.push(("LHS", pct_of(&|a: &Frame, b: &Frame| b.legs[1].phase < a.legs[1].phase)));
-        events.push(("LTO", pct_of(&toe_off(1))));
+        events.push(("RTO", pct_of(&|a: &Frame, b: &Frame| gait_events::is_toe_off(a, b, 0))));
+        events.push(("LHS", pct_of(&|a: &Frame, b: &Frame| gait_events::is_heel_strike(a, b, 1))));
+        events.push(("LTO", pct_of(&|a: &Frame, b: &Frame| gait_events::is_toe_off(a, b, 1))));
         events.retain(|e| e.1.is_finite());
         Data { run, params, strikes, events }
     }

@@ -5,7 +5,8 @@
 //! leaves the ankle where it is.
 
 use crate::model::ik::chain::{LegAngles, LegChain, swivel_to_reference};
-use crate::model::ik::solver::{IkSettings, Iterated, iterate, unlock_knee};
+use crate::model::ik::iterate::{Iterated, iterate, unlock_knee};
+use crate::model::ik::settings::IkSettings;
 use glam::{DQuat, DVec3};
 
 /// Solves for the ankle at `target` (leg frame) from `start`.

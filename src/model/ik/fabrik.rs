@@ -5,7 +5,8 @@
 //! hip→ankle axis toward the reference vector, FABRIK's usual pole target.
 
 use crate::model::ik::chain::{ChainPose, LegAngles, LegChain, swivel_to_reference};
-use crate::model::ik::solver::{IkSettings, Iterated, iterate, unlock_knee};
+use crate::model::ik::iterate::{Iterated, iterate, unlock_knee};
+use crate::model::ik::settings::IkSettings;
 use glam::DVec3;
 
 /// Solves for the ankle at `target` (leg frame) from `start`.

@@ -7,7 +7,8 @@
 //! lower. The generator is seeded, so a run repeats exactly.
 
 use crate::model::ik::chain::{LegAngles, LegChain};
-use crate::model::ik::solver::{IkSettings, Iterated};
+use crate::model::ik::iterate::Iterated;
+use crate::model::ik::settings::IkSettings;
 use crate::model::terrain::SplitMix64;
 use glam::DVec3;
 

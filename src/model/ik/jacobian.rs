@@ -4,7 +4,8 @@
 //! differences of the chain's own forward kinematics.
 
 use crate::model::ik::chain::{LegAngles, LegChain};
-use crate::model::ik::solver::{IkSettings, Iterated, JacobianVariant, iterate};
+use crate::model::ik::iterate::{Iterated, iterate};
+use crate::model::ik::settings::{IkSettings, JacobianVariant};
 use glam::{DMat4, DVec3, DVec4};
 
 /// Largest joint update per iteration (rad): keeps a near-singular step from flinging the leg.

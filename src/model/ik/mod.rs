@@ -13,11 +13,14 @@ pub mod ccd;
 pub mod chain;
 pub mod fabrik;
 pub mod gradient;
+pub mod iterate;
 pub mod jacobian;
+pub mod settings;
 pub mod solver;
 
 pub use chain::{IkQuestion, JointLimits, LegAngles, LegChain};
-pub use solver::{IkAnswer, IkSettings, IkSolverKind, JacobianVariant, LegSolver};
+pub use settings::{GradientSettings, IkAnswer, IkSettings, IkSolverKind, JacobianVariant};
+pub use solver::LegSolver;
 
 /// What mature two-bone solvers (ozz-animation's `IKTwoBoneJob`, Godot's `TwoBoneIK3D`) add to
 /// the bare law-of-cosines solve.

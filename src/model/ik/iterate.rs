@@ -1,0 +1,97 @@
+//! The iteration driver the iterative solvers (CCD, FABRIK, Jacobian) share: stop at the
+//! tolerance, at the cap, or when a target out of reach stops improving.
+
+use crate::model::ik::chain::{ChainPose, LegAngles, LegChain};
+use crate::model::ik::settings::IkSettings;
+use glam::DVec3;
+
+/// What an iterative solver hands back.
+#[derive(Clone, Copy, Debug)]
+pub struct Iterated {
+    /// Final angles.
+    pub angles: LegAngles,
+    /// Iterations used.
+    pub iterations: u32,
+}
+
+/// Notices when an iteration on a target out of reach has stopped improving, so solvers end
+/// with the leg stretched toward it instead of spinning to their cap. Reachable targets never
+/// stall: slow convergence there is the solver's own figure to report.
+#[derive(Clone, Copy, Debug)]
+pub struct Stall {
+    out_of_reach: bool,
+    best: f64,
+    since: u32,
+}
+
+impl Stall {
+    /// Iterations without a gain of at least 0.1 µm before giving up.
+    const PATIENCE: u32 = 4;
+
+    /// A watcher for one solve toward `target` (leg frame).
+    #[must_use]
+    pub fn new(chain: &LegChain, target: DVec3) -> Self {
+        let d = target.length();
+        let out_of_reach = d > chain.reach() - 1e-9 || d < (chain.thigh - chain.shank).abs() + 1e-9;
+        Stall { out_of_reach, best: f64::INFINITY, since: 0 }
+    }
+
+    /// Records this iteration's error (m); true once it has not improved for a while.
+    pub fn stalled(&mut self, error: f64) -> bool {
+        if !self.out_of_reach {
+            return false;
+        }
+        if error < self.best - 1e-7 {
+            self.best = error;
+            self.since = 0;
+            false
+        } else {
+            self.since += 1;
+            self.since >= Self::PATIENCE
+        }
+    }
+}
+
+/// The least knee flexion iterative solvers keep while the target is within reach (rad).
+///
+/// A straight chain pointed at a nearer target is a fixed point of CCD and FABRIK (every
+/// joint already points at it), so they could never bend the knee out of it. 0.5° shortens
+/// the leg by under 0.01 mm, far inside any tolerance.
+pub const MIN_BEND: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+/// `angles` with the knee bent at least [`MIN_BEND`] when `target` is within reach.
+#[must_use]
+pub fn unlock_knee(chain: &LegChain, angles: LegAngles, target: DVec3) -> LegAngles {
+    if angles.knee_flex < MIN_BEND && target.length() < chain.reach() - 1e-6 {
+        LegAngles { knee_flex: MIN_BEND, ..angles }
+    } else {
+        angles
+    }
+}
+
+/// Runs an iterative solver's `step` from `start` until the pose is within the tolerance,
+/// the iterations run out, or (out of reach) it stops improving. `step` gets the current
+/// angles and their pose and returns the next angles.
+pub fn iterate(
+    chain: &LegChain,
+    target: DVec3,
+    side: f64,
+    start: LegAngles,
+    s: &IkSettings,
+    mut step: impl FnMut(LegAngles, ChainPose) -> LegAngles,
+) -> Iterated {
+    let mut angles = start;
+    let mut stall = Stall::new(chain, target);
+    for iteration in 0..=s.max_iterations {
+        let pose = chain.forward(angles, side);
+        let (distance, arc) = chain.residual(pose, target);
+        if distance <= s.tolerance && arc.abs() <= s.tolerance {
+            return Iterated { angles, iterations: iteration };
+        }
+        if iteration == s.max_iterations || stall.stalled(distance.hypot(arc)) {
+            return Iterated { angles, iterations: iteration };
+        }
+        angles = step(angles, pose);
+    }
+    Iterated { angles, iterations: s.max_iterations }
+}
