@@ -26,10 +26,10 @@
 
 use crate::model::body::Side;
 use crate::model::params::{CostForm, OptimiserParams, SearchMethod};
-use crate::model::walk::frame::sagittal_leg_angles;
+use crate::model::walk::gait::Gait;
 use crate::model::walk::leg::LegState;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose};
-use crate::model::walk::{Walker, solve_leg};
+use crate::model::walk::pose::{sagittal_leg_angles, solve_leg};
 
 /// One evaluated pelvis position.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -154,22 +154,23 @@ impl StepProblem {
     /// leg cannot reach its ground contact somewhere in the simulated window or at the heel
     /// strike.
     #[must_use]
-    pub fn cost(&self, walker: &Walker, x: f64, y: f64) -> Option<f64> {
-        self.simulate(walker, x, y).0
+    pub fn cost(&self, walk: &impl AsRef<Gait>, x: f64, y: f64) -> Option<f64> {
+        self.simulate(walk.as_ref(), x, y).0
     }
 
     /// Sets [`StepProblem::heel_rise_allowance`] from the fixed rule's position.
     #[must_use]
-    pub fn with_allowance(mut self, walker: &Walker) -> StepProblem {
+    pub fn with_allowance(mut self, walk: &impl AsRef<Gait>) -> StepProblem {
+        let gait = walk.as_ref();
         self.heel_rise_allowance = f64::INFINITY;
         self.hip_extension_allowance = f64::INFINITY;
         // The cache pays for itself from the second evaluation on; with the optimiser off the
         // fixed rule's is the only one.
         if self.settings.enabled {
             let plan = self.plan.clone();
-            self.orientations = self.sample_phases().map(|phase| walker.pelvis_with_plan(&plan, phase)).collect();
+            self.orientations = self.sample_phases().map(|phase| gait.pelvis_with_plan(&plan, phase)).collect();
         }
-        let (cost, fixed_rule_extra, fixed_rule_extension) = self.simulate(walker, self.fixed_rule_x(), self.ds.y);
+        let (cost, fixed_rule_extra, fixed_rule_extension) = self.simulate(gait, self.fixed_rule_x(), self.ds.y);
         self.heel_rise_allowance = fixed_rule_extra.max(0.0) + self.settings.heel_rise_slack_deg.to_radians();
         self.hip_extension_allowance = fixed_rule_extension + self.settings.hip_extension_slack_deg.to_radians();
         self.fixed_rule_cost = cost;
@@ -193,14 +194,14 @@ impl StepProblem {
 
     /// The cost (as [`StepProblem::cost`]), and the most extra heel rise and the most hip
     /// extension a stance leg needed before the simulation ended (rad).
-    fn simulate(&self, walker: &Walker, x: f64, y: f64) -> (Option<f64>, f64, f64) {
+    fn simulate(&self, gait: &Gait, x: f64, y: f64) -> (Option<f64>, f64, f64) {
         let mut most_extra: f64 = 0.0;
         let mut most_extension = f64::NEG_INFINITY;
         let mut plan = self.plan.clone();
         let key = plan.last_of_mut(KeyKind::DoubleSupport).expect("the problem's plan has its key");
         key.x = x;
         key.y = y;
-        let r = walker.resolved();
+        let r = gait.resolved();
         let limit = r.reach_margin * r.dims.leg_reach() + 1e-9;
         let s = &self.settings;
         let weights = [s.weight_hip, s.weight_knee, s.weight_ankle];
@@ -215,17 +216,17 @@ impl StepProblem {
             let step = (to - from) / (per_half - 1) as f64;
             for i in 0..per_half {
                 let phase = from + step * i as f64;
-                walker.project_stance(&plan, &mut leg, phase);
+                gait.project_stance(&plan, &mut leg, phase);
                 let pelvis = match self.orientations.get(half * per_half + i) {
                     Some(cached) => {
                         let mut pose = *cached;
-                        (pose.position.x, pose.position.y) = walker.pelvis_position_with_plan(&plan, phase);
+                        (pose.position.x, pose.position.y) = gait.pelvis_position_with_plan(&plan, phase);
                         pose
                     }
-                    None => walker.pelvis_with_plan(&plan, phase),
+                    None => gait.pelvis_with_plan(&plan, phase),
                 };
                 let hip = pelvis.hip(leg.side.sign());
-                let target = walker.target_of(&leg, phase, hip);
+                let target = gait.target_of(&leg, phase, hip);
                 most_extra = most_extra.max(target.extra_heel_rise);
                 if hip.distance(target.ankle) > limit || target.extra_heel_rise > self.heel_rise_allowance {
                     return (None, most_extra, most_extension);
@@ -242,8 +243,8 @@ impl StepProblem {
         }
         // The landing leg must reach its footfall at heel strike, before the window starts.
         let strike = self.landing.cycle_start;
-        let hip = walker.pelvis_with_plan(&plan, strike).hip(self.landing.side.sign());
-        if hip.distance(walker.target_of(&self.landing, strike, hip).ankle) > limit {
+        let hip = gait.pelvis_with_plan(&plan, strike).hip(self.landing.side.sign());
+        if hip.distance(gait.target_of(&self.landing, strike, hip).ankle) > limit {
             return (None, most_extra, most_extension);
         }
         (Some(total), most_extra, most_extension)
@@ -251,12 +252,13 @@ impl StepProblem {
 
     /// Samples the cost over the whole forward range at the problem's height (for plots).
     #[must_use]
-    pub fn landscape(&self, walker: &Walker, count: usize) -> Vec<Candidate> {
+    pub fn landscape(&self, walk: &impl AsRef<Gait>, count: usize) -> Vec<Candidate> {
+        let gait = walk.as_ref();
         let (lo, hi) = self.range;
         (0..count.max(2))
             .map(|i| {
                 let x = lo + (hi - lo) * i as f64 / (count.max(2) - 1) as f64;
-                Candidate { x, y: self.ds.y, cost: self.cost(walker, x, self.ds.y) }
+                Candidate { x, y: self.ds.y, cost: self.simulate(gait, x, self.ds.y).0 }
             })
             .collect()
     }
@@ -265,7 +267,8 @@ impl StepProblem {
     /// [`StepProblem::with_allowance`] has costed it; the best feasible one is the choice (the
     /// caller falls back when there is none).
     #[must_use]
-    pub fn search(&self, walker: &Walker) -> Vec<Candidate> {
+    pub fn search(&self, walk: &impl AsRef<Gait>) -> Vec<Candidate> {
+        let gait = walk.as_ref();
         // The fixed rule's position is the middle of the range, so with an odd first level it
         // is one of its candidates: its cost, found while setting the allowance, is reused.
         let done = if self.heel_rise_allowance.is_finite() {
@@ -273,7 +276,7 @@ impl StepProblem {
         } else {
             Vec::new()
         };
-        let mut memo = Evaluations { problem: self, walker, done };
+        let mut memo = Evaluations { problem: self, gait, done };
         let (lo, hi) = self.range;
         let y0 = self.ds.y;
         let s = &self.settings;
@@ -336,7 +339,7 @@ impl StepProblem {
 /// Evaluations made so far, so that no point is costed twice.
 struct Evaluations<'a> {
     problem: &'a StepProblem,
-    walker: &'a Walker,
+    gait: &'a Gait,
     done: Vec<Candidate>,
 }
 
@@ -346,7 +349,7 @@ impl Evaluations<'_> {
         if let Some(c) = self.done.iter().find(|c| (c.x - x).abs() < 1e-9 && (c.y - y).abs() < 1e-9) {
             return c.cost.unwrap_or(f64::INFINITY);
         }
-        let cost = self.problem.cost(self.walker, x, y);
+        let cost = self.problem.simulate(self.gait, x, y).0;
         self.done.push(Candidate { x, y, cost });
         cost.unwrap_or(f64::INFINITY)
     }

@@ -3,8 +3,8 @@
 
 use crate::model::body::{Bone, Side};
 use crate::model::walk::Walker;
-use crate::model::walk::leg::{LegPhase, LegPose};
-use glam::{DQuat, DVec3};
+use crate::model::walk::leg::LegPhase;
+use glam::DVec3;
 
 /// Which feet carry the body.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -94,59 +94,8 @@ pub struct Frame {
     pub legs: [LegFrame; 2],
 }
 
-/// Clinical angles of one leg (deg).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LegAngles {
-    /// Hip flexion, thigh against the pelvis, flexion +.
-    pub hip_flex_deg: f64,
-    /// Hip abduction, away from the midline +.
-    pub hip_abd_deg: f64,
-    /// Knee flexion.
-    pub knee_flex_deg: f64,
-    /// Ankle dorsiflexion (plantarflexion −), foot against the shank.
-    pub ankle_dorsi_deg: f64,
-}
-
-/// The clinical angles of a solved leg under a pelvis with world rotation `pelvis`. Shared
-/// by the joint table and the pelvis optimisation's cost, so both measure the same thing.
-#[must_use]
-pub fn leg_angles(pelvis: DQuat, leg: &LegPose, side_sign: f64) -> LegAngles {
-    let [hip_flex, knee, ankle] = sagittal_leg_angles(pelvis, leg);
-    let thigh = (leg.knee - leg.hip).normalize();
-    let (_, hip_abd) = sagittal_and_frontal(pelvis, thigh, side_sign);
-    LegAngles {
-        hip_flex_deg: hip_flex.to_degrees(),
-        hip_abd_deg: hip_abd.to_degrees(),
-        knee_flex_deg: knee.to_degrees(),
-        ankle_dorsi_deg: ankle.to_degrees(),
-    }
-}
-
-/// Hip flexion, knee flexion and ankle dorsiflexion (rad) of a solved leg: the three angles
-/// of [`leg_angles`] that the pelvis optimisation's cost differentiates.
-#[must_use]
-pub fn sagittal_leg_angles(pelvis: DQuat, leg: &LegPose) -> [f64; 3] {
-    let thigh = (leg.knee - leg.hip).normalize();
-    let shank = (leg.ankle - leg.knee).normalize();
-    let d = pelvis.inverse() * thigh;
-    let hip_flex = d.x.atan2(-d.y);
-    let knee = thigh.dot(shank).clamp(-1.0, 1.0).acos();
-    // The shank's frame: y up along the shank, z on the knee hinge, x forward.
-    let hinge = (leg.ankle - leg.hip).cross(leg.swivel).normalize_or(DVec3::Z);
-    let y = -shank;
-    let z = (hinge - y * y.dot(hinge)).normalize_or(DVec3::Z);
-    let x = y.cross(z);
-    let foot_forward = leg.foot * DVec3::X;
-    let ankle = foot_forward.dot(y).atan2(foot_forward.dot(x));
-    [hip_flex, knee, ankle]
-}
-
-/// Flexion of a limb segment pointing along `dir` (world), measured in the sagittal plane of
-/// the parent frame `parent` (forward of straight down +), and its abduction toward `side`.
-fn sagittal_and_frontal(parent: DQuat, dir: DVec3, side_sign: f64) -> (f64, f64) {
-    let d = parent.inverse() * dir;
-    (d.x.atan2(-d.y), (side_sign * d.z).atan2(-d.y))
-}
+pub use crate::model::walk::pose::LegAngles;
+use crate::model::walk::pose::{leg_angles, sagittal_and_frontal};
 
 impl Walker {
     /// The current frame's numbers; `frame` is the caller's frame counter.

@@ -8,19 +8,23 @@
 //! is skipped, however long the frame.
 
 pub mod frame;
+pub mod gait;
 pub mod leg;
 pub mod pelvis;
+pub mod pose;
 pub mod upper;
+
+pub use gait::{Gait, HEEL_RISE_DESIGN_STRIDE_M, MAX_HEEL_RISE, enter_stance_phase, heel_rise_to_reach, swing_target};
+pub use pose::{bone_frame, ik_question, leg_pose, solve_leg};
 
 use crate::model::body::{Bone, Pose, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::ik::{
-    IkAnswer, IkQuestion, LegSolver, TwoBoneOptions, TwoBoneSolution, softened_distance, solve_two_bone_with,
-};
+use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
 use crate::model::optimise::{Candidate, StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
+use gait::{LiveCurves, cycle_targets, trajectory_curves};
 use glam::{DQuat, DVec3};
 use leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
 use pelvis::{KeyKind, PelvisKey, PelvisPlan, PelvisPose, TrajectoryCurves};
@@ -31,8 +35,6 @@ use upper::{ArmHang, UpperBody};
 pub const MAX_UPDATE_CYCLES: f64 = 0.04;
 /// Samples of the swing simulation at toe-off [6.3.2].
 pub const SWING_SAMPLES: usize = 50;
-/// Stride the heel-rise curve is designed for (m) [fig 6.5].
-pub const HEEL_RISE_DESIGN_STRIDE_M: f64 = 1.8;
 /// Toe-off plantarflexion the swing-ankle curve is designed for (deg) [fig 6.8].
 pub const SWING_ANKLE_DESIGN_DEG: f64 = 15.0;
 /// Heel height at toe-off the swing heel-height curve is designed for (m) [fig 6.10].
@@ -42,9 +44,6 @@ pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 /// Slope of the heel-height curve at landing (m per swing), at most: the heel descends onto
 /// the footfall.
 pub const LANDING_SLOPE_M: f64 = -0.08;
-/// Steepest heel rise the stance leg may take to reach (rad).
-pub const MAX_HEEL_RISE: f64 = 1.45;
-
 /// A walk that cannot be built.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ModelError(pub String);
@@ -56,32 +55,6 @@ impl fmt::Display for ModelError {
 }
 
 impl std::error::Error for ModelError {}
-
-/// The cycle curves played live, in real units (rad or m).
-#[derive(Clone, Debug)]
-struct LiveCurves {
-    obliquity: LiveCurve,
-    rotation: LiveCurve,
-    tilt: LiveCurve,
-    lateral: LiveCurve,
-    shoulder: [LiveCurve; 2],
-    elbow: [LiveCurve; 2],
-}
-
-/// Real-unit cycle curves for a parameter set.
-fn cycle_targets(design: &CurveSet, r: &Resolved) -> [Curve; 6] {
-    let half = |name: CurveName, range: f64| design.get(name).scaled(1.0, 0.5 * range);
-    let mut elbow = half(CurveName::Elbow, r.elbow_range);
-    elbow.offset_y(r.elbow_min_flex + 0.5 * r.elbow_range);
-    [
-        half(CurveName::PelvisObliquity, r.obliquity_range),
-        half(CurveName::PelvisRotation, r.rotation_range),
-        half(CurveName::PelvisTilt, r.tilt_range),
-        half(CurveName::PelvisLateral, r.lateral_range),
-        half(CurveName::Shoulder, r.shoulder_range),
-        elbow,
-    ]
-}
 
 /// The decision made for one step at toe-off, kept for the optimiser panel and reports.
 #[derive(Clone, Debug, PartialEq)]
@@ -106,10 +79,6 @@ pub struct StepPlan {
     pub swing_ankle_deg: Curve,
 }
 
-/// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
-/// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
-const REACH_EASE: f64 = 0.995;
-
 /// Steps of plans and footfalls a long-running walk keeps when it trims its history (the lab,
 /// `simulate`): far more than the lab's optimiser table and walk view ever show.
 pub const RECENT_STEPS: usize = 256;
@@ -118,12 +87,9 @@ pub const RECENT_STEPS: usize = 256;
 #[derive(Clone, Debug)]
 pub struct Walker {
     params: WalkParams,
-    r: Resolved,
+    gait: Gait,
     terrain: Terrain,
-    design: CurveSet,
-    traj: TrajectoryCurves,
     pending_traj: Option<TrajectoryCurves>,
-    live: LiveCurves,
     plan: PelvisPlan,
     legs: [LegState; 2],
     phase: f64,
@@ -241,12 +207,9 @@ impl Walker {
         let mut walker = Walker {
             params: params.clone(),
             pose: Pose::rest(&dims),
-            r,
+            gait: Gait { r, design, traj, live },
             terrain,
-            design,
-            traj,
             pending_traj: None,
-            live,
             plan: PelvisPlan::default(),
             legs,
             phase: 0.0,
@@ -282,7 +245,7 @@ impl Walker {
         if dt_s.is_nan() || dt_s <= 0.0 || !dt_s.is_finite() {
             return;
         }
-        let total = dt_s / self.r.cycle_s;
+        let total = dt_s / self.gait.r.cycle_s;
         let n = (total / MAX_UPDATE_CYCLES).ceil().max(1.0) as usize;
         let d = total / n as f64;
         for _ in 0..n {
@@ -325,16 +288,21 @@ impl Walker {
     /// played never changes shape under it.
     fn cross_key_boundaries(&mut self, to: f64) {
         if self.pending_traj.is_some() && self.plan.keys().any(|k| k.phase > self.phase && k.phase <= to) {
-            self.traj = self.pending_traj.take().expect("checked");
+            self.gait.traj = self.pending_traj.take().expect("checked");
         }
     }
 
     fn wrap_cycle_curves(&mut self, side: Side) {
         let i = side.index();
-        self.live.shoulder[i].wrap();
-        self.live.elbow[i].wrap();
+        self.gait.live.shoulder[i].wrap();
+        self.gait.live.elbow[i].wrap();
         if side == Side::Right {
-            for c in [&mut self.live.obliquity, &mut self.live.rotation, &mut self.live.tilt, &mut self.live.lateral] {
+            for c in [
+                &mut self.gait.live.obliquity,
+                &mut self.gait.live.rotation,
+                &mut self.gait.live.tilt,
+                &mut self.gait.live.lateral,
+            ] {
                 c.wrap();
             }
         }
@@ -344,9 +312,9 @@ impl Walker {
     fn boundary_phase(&self, side: Side) -> f64 {
         let leg = &self.legs[side.index()];
         let end = match leg.phase {
-            LegPhase::LoadingResponse => self.r.foot_flat,
-            LegPhase::Midstance => self.r.heel_rise,
-            LegPhase::HeelRise => self.r.toe_off,
+            LegPhase::LoadingResponse => self.gait.r.foot_flat,
+            LegPhase::Midstance => self.gait.r.heel_rise,
+            LegPhase::HeelRise => self.gait.r.toe_off,
             LegPhase::Swing => 1.0,
         };
         leg.cycle_start + end
@@ -356,7 +324,7 @@ impl Walker {
     fn evaluate_now(&mut self) {
         let pelvis = self.pelvis_at(self.phase);
         for side in Side::BOTH {
-            let pose = if self.r.ik.solver.is_iterative() {
+            let pose = if self.gait.r.ik.solver.is_iterative() {
                 let hip = pelvis.hip(side.sign());
                 let target = self.leg_target(side, self.phase, hip);
                 let answer = self.leg_solvers[side.index()].solve(&ik_question(hip, target, side));
@@ -365,7 +333,7 @@ impl Walker {
                 let swivel = crate::model::ik::orthogonal_part(axis, answer.knee - hip);
                 let solved =
                     TwoBoneSolution { middle: answer.knee, end: answer.ankle, swivel, reached: answer.reached };
-                leg_pose(&self.r, hip, target, &solved)
+                leg_pose(&self.gait.r, hip, target, &solved)
             } else {
                 let pose = self.evaluate_leg(side, self.phase, &pelvis);
                 self.last_ik[side.index()] = IkAnswer::exact(pose.knee, pose.ankle, pose.reached, pose.target.ankle);
@@ -379,9 +347,9 @@ impl Walker {
         self.pelvis = pelvis;
         let p_right = self.phase.rem_euclid(1.0);
         let arm_phase = [p_right, (self.phase - 0.5).rem_euclid(1.0)];
-        let shoulder = [self.live.shoulder[0].eval(arm_phase[0]), self.live.shoulder[1].eval(arm_phase[1])];
-        let elbow = [self.live.elbow[0].eval(arm_phase[0]), self.live.elbow[1].eval(arm_phase[1])];
-        self.upper = UpperBody::solve(&self.r, &self.arm_hang, &pelvis, shoulder, elbow);
+        let shoulder = [self.gait.live.shoulder[0].eval(arm_phase[0]), self.gait.live.shoulder[1].eval(arm_phase[1])];
+        let elbow = [self.gait.live.elbow[0].eval(arm_phase[0]), self.gait.live.elbow[1].eval(arm_phase[1])];
+        self.upper = UpperBody::solve(&self.gait.r, &self.arm_hang, &pelvis, shoulder, elbow);
         self.build_pose();
     }
 
@@ -391,26 +359,33 @@ impl Walker {
         self.pelvis_with_plan(&self.plan, phase)
     }
 
-    /// Forward position and height of the pelvis at `phase` under a given plan (the optimiser
-    /// tries candidate plans; the rest of the pose does not depend on the plan).
+    /// Forward position and height of the pelvis at `phase` under a given plan.
     #[must_use]
     pub fn pelvis_position_with_plan(&self, plan: &PelvisPlan, phase: f64) -> (f64, f64) {
-        plan.position(phase, &self.traj)
+        self.gait.pelvis_position_with_plan(plan, phase)
     }
 
     /// The pelvis at `phase` under a given plan.
     #[must_use]
     pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
-        let (x, y) = plan.position(phase, &self.traj);
-        let p = phase.rem_euclid(1.0);
-        let z = self.live.lateral.eval(p);
-        PelvisPose::new(
-            DVec3::new(x, y, z),
-            self.live.rotation.eval(p),
-            self.live.obliquity.eval(p),
-            self.live.tilt.eval(p),
-            0.5 * self.r.dims.hip_width,
-        )
+        self.gait.pelvis_with_plan(plan, phase)
+    }
+
+    /// The IK target of a leg in state `leg` at master phase `phase` (see [`Gait::target_of`]).
+    #[must_use]
+    pub fn target_of(&self, leg: &LegState, phase: f64, hip: DVec3) -> LegTarget {
+        self.gait.target_of(leg, phase, hip)
+    }
+
+    /// A copy of a stance leg's state moved forward to `phase` (see [`Gait::project_stance`]).
+    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
+        self.gait.project_stance(plan, leg, phase);
+    }
+
+    /// The walk's rules now, without its clock: what the optimiser's cost runs.
+    #[must_use]
+    pub fn gait(&self) -> &Gait {
+        &self.gait
     }
 
     /// The leg's IK target at master phase `phase`, from its state and the hip position.
@@ -419,76 +394,12 @@ impl Walker {
         self.target_of(&self.legs[side.index()], phase, hip)
     }
 
-    /// The IK target of a leg in state `leg` (real, or projected by the optimiser) at master
-    /// phase `phase`: the one place where the four phases turn into ankle targets.
-    #[must_use]
-    pub fn target_of(&self, leg: &LegState, phase: f64, hip: DVec3) -> LegTarget {
-        let r = &self.r;
-        let dims = &r.dims;
-        let q = phase - leg.cycle_start;
-        let ff = &leg.footfall;
-        match leg.phase {
-            LegPhase::LoadingResponse => {
-                let s = (q / r.foot_flat).clamp(0.0, 1.0);
-                let pitch = ff.ground_angle + leg.strike_angle * (1.0 - s);
-                let ankle = leg.anchor - foot_rotation(ff.yaw, pitch) * dims.heel_local();
-                LegTarget { ankle, pitch, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
-            }
-            LegPhase::Midstance => LegTarget {
-                ankle: leg.anchor,
-                pitch: ff.ground_angle,
-                toe_bend: 0.0,
-                yaw: ff.yaw,
-                extra_heel_rise: 0.0,
-            },
-            LegPhase::HeelRise => {
-                let s = ((q - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0);
-                let curve_angle =
-                    (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
-                let ankle_at =
-                    |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
-                let limit = r.reach_margin * dims.leg_reach();
-                let mut angle = curve_angle;
-                // The hip moving past what the curve's heel rise lets the leg reach makes the
-                // foot roll further over the toes. Not by clamping the leg at its limit — that
-                // pins the knee with a corner in every joint's angle, which the optimiser's
-                // squared accelerations then see as a spike wherever it falls between two
-                // samples — but eased in: from REACH_EASE of the limit on, the hip-ankle
-                // distance follows the softening curve that approaches the limit with slope 1
-                // at its start, ramped in over the first tenth of the phase so that nothing
-                // jumps when heel rise begins.
-                let d0 = hip.distance(ankle_at(angle));
-                let ramp = (s / 0.1).clamp(0.0, 1.0);
-                let ramp = ramp * ramp * (3.0 - 2.0 * ramp);
-                let eased = d0 - ramp * (d0 - softened_distance(d0, limit, REACH_EASE));
-                let wanted = eased.min(limit);
-                if d0 > wanted + 1e-12
-                    && let Some(reaching) = heel_rise_to_reach(leg.anchor, ff, dims.ball_local(), hip, wanted, angle)
-                {
-                    angle = reaching;
-                }
-                LegTarget {
-                    ankle: ankle_at(angle),
-                    pitch: ff.ground_angle - angle,
-                    toe_bend: angle,
-                    yaw: ff.yaw,
-                    extra_heel_rise: angle - curve_angle,
-                }
-            }
-            LegPhase::Swing => {
-                let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
-                let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
-                swing_target(plan, s, leg.side, r)
-            }
-        }
-    }
-
     /// Solves `side`'s leg at `phase` with the given pelvis.
     #[must_use]
     pub fn evaluate_leg(&self, side: Side, phase: f64, pelvis: &PelvisPose) -> LegPose {
         let hip = pelvis.hip(side.sign());
         let target = self.leg_target(side, phase, hip);
-        solve_leg(&self.r, hip, target)
+        solve_leg(&self.gait.r, hip, target)
     }
 
     /// Enters the phase after the current one at master phase `at` (the boundary).
@@ -497,7 +408,7 @@ impl Walker {
         let pose = self.legs[i].pose;
         let next = self.legs[i].phase.next();
         match next {
-            LegPhase::Midstance | LegPhase::HeelRise => enter_stance_phase(&mut self.legs[i], &pose, &self.r),
+            LegPhase::Midstance | LegPhase::HeelRise => enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r),
             LegPhase::Swing => {
                 self.plan_step(side, at, &pose);
                 self.legs[i].phase = next;
@@ -515,32 +426,12 @@ impl Walker {
         self.legs[i].phase_serial += 1;
     }
 
-    /// Moves a copy of a stance leg's state forward to master phase `phase` through its stance
-    /// phase changes, with the pelvis of `plan`: what the leg will be doing then, by the same
-    /// code the walk runs. Stops before toe-off (a swing needs planning, not projection).
-    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
-        loop {
-            let end = match leg.phase {
-                LegPhase::LoadingResponse => self.r.foot_flat,
-                LegPhase::Midstance => self.r.heel_rise,
-                LegPhase::HeelRise | LegPhase::Swing => return,
-            };
-            let boundary = leg.cycle_start + end;
-            if phase < boundary {
-                return;
-            }
-            let hip = self.pelvis_with_plan(plan, boundary).hip(leg.side.sign());
-            let pose = solve_leg(&self.r, hip, self.target_of(leg, boundary, hip));
-            enter_stance_phase(leg, &pose, &self.r);
-        }
-    }
-
     /// The pelvis key at mid-stance over `footfall`, whose heel strike is at master phase
     /// `strike_phase`: ahead of the heel by the offset parameter, at the mid-stance height
     /// above the ground under the foot (so the stance knee's extension is the same on any
     /// terrain, [6.3.3, fig 6.14]).
     fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
-        let r = &self.r;
+        let r = &self.gait.r;
         PelvisKey {
             phase: strike_phase + 0.5 * r.toe_off,
             x: footfall.heel.x + r.midstance_offset,
@@ -562,7 +453,7 @@ impl Walker {
         ms_before: &PelvisKey,
         ms_after: &PelvisKey,
     ) -> PelvisKey {
-        let r = &self.r;
+        let r = &self.gait.r;
         let ground = trailing.heel.y.min(leading.heel.y);
         PelvisKey {
             phase: strike_phase + 0.5 * (r.toe_off - 0.5),
@@ -669,7 +560,7 @@ impl Walker {
     /// of reach; the planner drops the pelvis rather than let the heel slide. Returns the
     /// drop of the double-support key (m).
     fn guard_stance_reach(&mut self, side: Side, strike_phase: f64, swing: Option<&SwingPlan>) -> f64 {
-        let r = self.r.clone();
+        let r = self.gait.r.clone();
         let limit = r.reach_margin * r.dims.leg_reach();
         let footfall = self.legs[side.index()].footfall;
         let strike_angle = self.legs[side.index()].strike_angle;
@@ -718,7 +609,7 @@ impl Walker {
                 }
                 // Lower whichever movable key moves the pelvis most at this instant.
                 let (a, b, u) = self.plan.bracket(phase);
-                let v = self.traj.vertical.eval(u);
+                let v = self.gait.traj.vertical.eval(u);
                 let mut choice: Option<(KeyKind, f64)> = None;
                 for (key, weight) in [(a, 1.0 - v), (b, v)] {
                     let movable = key.phase == ds_phase || key.phase == ms_phase;
@@ -746,7 +637,7 @@ impl Walker {
     /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
     /// swing [6.3.2].
     fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
-        let r = self.r.clone();
+        let r = self.gait.r.clone();
         let dims = &r.dims;
         let i = side.index();
         let other = self.legs[side.other().index()].footfall;
@@ -768,7 +659,7 @@ impl Walker {
         // Swing planning step 1: the foot pitch curve, scaled to the toe-off angle and turned
         // up at its end where the footfall slopes up so the toe does not land first.
         let pitch_from = toe_off_pose.target.pitch;
-        let mut ankle_deg = self.design.get(CurveName::SwingAnkle).clone();
+        let mut ankle_deg = self.gait.design.get(CurveName::SwingAnkle).clone();
         let toe_off_plantar_deg = (-pitch_from).to_degrees().max(0.0);
         ankle_deg.scale(1.0, (toe_off_plantar_deg / SWING_ANKLE_DESIGN_DEG).min(6.0));
         let strike = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
@@ -801,7 +692,7 @@ impl Walker {
         // moved by the terrain step, its middle raised by the knee-lift parameter.
         let ground_from = self.legs[i].footfall.heel.y;
         let heel_from = toe_off_pose.heel;
-        let mut heel_height = self.design.get(CurveName::SwingHeelHeight).clone();
+        let mut heel_height = self.gait.design.get(CurveName::SwingHeelHeight).clone();
         heel_height.scale(1.0, ((heel_from.y - ground_from) / SWING_HEEL_DESIGN_M).max(0.05));
         heel_height.shift_end(to.heel.y - ground_from - heel_height.eval(1.0));
         if r.knee_lift > 0.0 {
@@ -816,8 +707,8 @@ impl Walker {
             to,
             pitch_from,
             toe_bend_from: toe_off_pose.target.toe_bend,
-            forward: self.design.get(CurveName::SwingForward).clone(),
-            lateral: self.design.get(CurveName::SwingLateral).clone(),
+            forward: self.gait.design.get(CurveName::SwingForward).clone(),
+            lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
             ankle_deg,
             heel_height,
             raises: 0,
@@ -867,7 +758,7 @@ impl Walker {
     /// heel, toe tip or sole would come within the clearance of the ground. Up to eight passes;
     /// the foot's first 8 % are left alone, as its toe is on the ground at toe-off by design.
     fn simulate_swing(&self, side: Side, toe_off_phase: f64, plan: &mut SwingPlan) {
-        let r = &self.r;
+        let r = &self.gait.r;
         let dims = &r.dims;
         let limit = r.reach_margin * dims.leg_reach();
         let span = 1.0 - r.toe_off;
@@ -919,7 +810,7 @@ impl Walker {
 
     /// Builds the skeleton pose from the pelvis, legs and upper body.
     fn build_pose(&mut self) {
-        let dims = &self.r.dims;
+        let dims = &self.gait.r.dims;
         let pose = &mut self.pose;
         pose.position[Bone::Pelvis.index()] = self.pelvis.position;
         pose.rotation[Bone::Pelvis.index()] = self.pelvis.rotation;
@@ -948,18 +839,18 @@ impl Walker {
         let [obl, rot, tilt, lat, sh, el] = cycle_targets(&design, &r);
         let p_right = self.phase.rem_euclid(1.0);
         let p_left = (self.phase - 0.5).rem_euclid(1.0);
-        self.live.obliquity.change_to(obl, p_right);
-        self.live.rotation.change_to(rot, p_right);
-        self.live.tilt.change_to(tilt, p_right);
-        self.live.lateral.change_to(lat, p_right);
-        self.live.shoulder[0].change_to(sh.clone(), p_right);
-        self.live.shoulder[1].change_to(sh, p_left);
-        self.live.elbow[0].change_to(el.clone(), p_right);
-        self.live.elbow[1].change_to(el, p_left);
+        self.gait.live.obliquity.change_to(obl, p_right);
+        self.gait.live.rotation.change_to(rot, p_right);
+        self.gait.live.tilt.change_to(tilt, p_right);
+        self.gait.live.lateral.change_to(lat, p_right);
+        self.gait.live.shoulder[0].change_to(sh.clone(), p_right);
+        self.gait.live.shoulder[1].change_to(sh, p_left);
+        self.gait.live.elbow[0].change_to(el.clone(), p_right);
+        self.gait.live.elbow[1].change_to(el, p_left);
         let traj = trajectory_curves(&design);
-        if traj.forward_ds_ms != self.traj.forward_ds_ms
-            || traj.forward_ms_ds != self.traj.forward_ms_ds
-            || traj.vertical != self.traj.vertical
+        if traj.forward_ds_ms != self.gait.traj.forward_ds_ms
+            || traj.forward_ms_ds != self.gait.traj.forward_ms_ds
+            || traj.vertical != self.gait.traj.vertical
         {
             self.pending_traj = Some(traj);
         }
@@ -972,19 +863,19 @@ impl Walker {
                 LegPhase::Midstance => r.heel_rise = r.heel_rise.max(q),
                 LegPhase::HeelRise => {
                     r.toe_off = r.toe_off.max(q);
-                    r.heel_rise = self.r.heel_rise;
+                    r.heel_rise = self.gait.r.heel_rise;
                 }
-                LegPhase::Swing => r.toe_off = self.r.toe_off,
+                LegPhase::Swing => r.toe_off = self.gait.r.toe_off,
             }
         }
         self.arm_hang = ArmHang::new(&r.dims, r.arm_spread, r.elbow_min_flex);
-        if r.ik != self.r.ik {
+        if r.ik != self.gait.r.ik {
             for solver in &mut self.leg_solvers {
                 solver.set_settings(r.ik);
             }
         }
-        self.design = design;
-        self.r = r;
+        self.gait.design = design;
+        self.gait.r = r;
         self.params = params.clone();
         Ok(true)
     }
@@ -998,7 +889,7 @@ impl Walker {
     /// Derived values in force.
     #[must_use]
     pub fn resolved(&self) -> &Resolved {
-        &self.r
+        &self.gait.r
     }
 
     /// The terrain walked on.
@@ -1104,14 +995,14 @@ impl Walker {
     /// The design curves in force.
     #[must_use]
     pub fn design_curves(&self) -> &CurveSet {
-        &self.design
+        &self.gait.design
     }
 
     /// A cycle curve being played, in real units (for plots): pelvis obliquity, rotation,
     /// tilt (rad) and lateral (m); shoulder and elbow of the right arm (rad).
     #[must_use]
     pub fn live_curve(&self, name: CurveName) -> Option<&Curve> {
-        let live = &self.live;
+        let live = &self.gait.live;
         Some(match name {
             CurveName::PelvisObliquity => live.obliquity.playing(),
             CurveName::PelvisRotation => live.rotation.playing(),
@@ -1130,157 +1021,10 @@ impl Walker {
     }
 }
 
-fn trajectory_curves(design: &CurveSet) -> TrajectoryCurves {
-    TrajectoryCurves {
-        forward_ds_ms: design.get(CurveName::PelvisForwardDsMs).clone(),
-        forward_ms_ds: design.get(CurveName::PelvisForwardMsDs).clone(),
-        vertical: design.get(CurveName::PelvisVertical).clone(),
+impl AsRef<Gait> for Walker {
+    fn as_ref(&self) -> &Gait {
+        &self.gait
     }
-}
-
-/// Moves a stance leg into its next stance phase, given its pose at the boundary: midstance
-/// holds the ankle where loading response left it; heel rise holds the toe joint of the flat
-/// foot and freezes the heel-rise curve's stride scale.
-pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Resolved) {
-    match leg.phase {
-        LegPhase::LoadingResponse => {
-            leg.anchor = pose_at_boundary.target.ankle;
-            leg.phase = LegPhase::Midstance;
-        }
-        LegPhase::Midstance => {
-            leg.anchor = pose_at_boundary.target.ankle
-                + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
-            leg.heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
-            leg.phase = LegPhase::HeelRise;
-        }
-        LegPhase::HeelRise | LegPhase::Swing => {}
-    }
-}
-
-/// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
-/// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
-/// line toward the hip line and back, up on the heel-height curve; foot pitched by the ankle
-/// curve; toes back to neutral over the first fifth of the swing.
-#[must_use]
-pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTarget {
-    let from = plan.heel_from;
-    let to = plan.to.heel;
-    let progress = plan.forward.eval(s);
-    let x = from.x + (to.x - from.x) * progress;
-    let line_z = from.z + (to.z - from.z) * progress;
-    let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
-    let z = line_z + (hip_line_z - line_z) * plan.lateral.eval(s);
-    let y = plan.ground_from + plan.heel_height.eval(s);
-    let pitch = plan.ankle_deg.eval(s).to_radians();
-    let heel = DVec3::new(x, y, z);
-    let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
-    // The toes return to neutral over the first fifth of the swing, but never point below
-    // the horizontal while the foot is still pitched down: a toe tip dipping back into the
-    // ground it just left is what a literal linear return would draw.
-    let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
-    LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
-}
-
-/// The least heel-rise angle ≥ `from` (rad) at which the ankle, swinging about the toe joint
-/// `ball`, comes within `limit` of `hip`; `None` if no angle up to [`MAX_HEEL_RISE`] does.
-///
-/// In the foot's yaw frame the ankle is ball − Rz(g − β)·b, so the squared distance to the hip
-/// is |d|² + |b|² + 2 d·Rz(θ)·b with d = hip − ball, θ = g − β: a sinusoid in θ, solved in
-/// closed form (A cos θ + B sin θ = K) instead of by bisection on every frame.
-#[must_use]
-pub fn heel_rise_to_reach(
-    ball: DVec3,
-    footfall: &Footfall,
-    ball_local: DVec3,
-    hip: DVec3,
-    limit: f64,
-    from: f64,
-) -> Option<f64> {
-    let d = DQuat::from_rotation_y(-footfall.yaw) * (hip - ball);
-    let b = ball_local;
-    let a_coef = d.x * b.x + d.y * b.y;
-    let b_coef = d.y * b.x - d.x * b.y;
-    let k = 0.5 * (limit * limit - d.length_squared() - b.length_squared()) - d.z * b.z;
-    let amplitude = a_coef.hypot(b_coef);
-    if amplitude < 1e-12 || (k / amplitude).abs() > 1.0 {
-        return None;
-    }
-    let phi = b_coef.atan2(a_coef);
-    let spread = (k / amplitude).acos();
-    // Both roots in θ, mapped to β = g − θ and brought into (from − π, from + π].
-    let g = footfall.ground_angle;
-    let wrap = |beta: f64| {
-        let mut x = beta;
-        while x <= from - std::f64::consts::PI {
-            x += std::f64::consts::TAU;
-        }
-        while x > from + std::f64::consts::PI {
-            x -= std::f64::consts::TAU;
-        }
-        x
-    };
-    [wrap(g - (phi + spread)), wrap(g - (phi - spread))]
-        .into_iter()
-        .filter(|beta| *beta >= from - 1e-12 && *beta <= MAX_HEEL_RISE)
-        .min_by(f64::total_cmp)
-}
-
-/// IK for one leg toward `target`, with the knee toward the walking direction turned by the
-/// foot's yaw (the reference vector), then the foot and toes set to the target's angles.
-#[must_use]
-pub fn solve_leg(r: &Resolved, hip: DVec3, target: LegTarget) -> LegPose {
-    let dims = &r.dims;
-    // The walking direction turned by the foot's yaw: Ry(yaw)·x.
-    let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
-    let reference = DVec3::new(cos_yaw, 0.0, -sin_yaw);
-    // The analytic solver's soften and twist apply to the walk too (both off by default, when
-    // this is exactly the plain law-of-cosines solve).
-    let options = TwoBoneOptions { soften: r.ik.soften, twist: r.ik.twist };
-    let ik = solve_two_bone_with(hip, target.ankle, dims.thigh, dims.shank, reference, options);
-    leg_pose(r, hip, target, &ik)
-}
-
-/// The IK question the walk asks for a leg: hip, ankle target, and the knee toward the walking
-/// direction turned by the foot's yaw.
-#[must_use]
-pub fn ik_question(hip: DVec3, target: LegTarget, side: Side) -> IkQuestion {
-    let (sin_yaw, cos_yaw) = target.yaw.sin_cos();
-    IkQuestion { hip, target: target.ankle, reference: DVec3::new(cos_yaw, 0.0, -sin_yaw), side_sign: side.sign() }
-}
-
-/// The whole leg from a solved hip–knee–ankle chain: foot and toes set to the target's angles.
-#[must_use]
-pub fn leg_pose(r: &Resolved, hip: DVec3, target: LegTarget, ik: &TwoBoneSolution) -> LegPose {
-    let dims = &r.dims;
-    let foot = foot_rotation(target.yaw, target.pitch);
-    // Flat-footed stance has no toe bend; skipping the rotation saves a sin/cos per solve.
-    let toe = if target.toe_bend == 0.0 { foot } else { foot * DQuat::from_rotation_z(target.toe_bend) };
-    let heel = ik.end + foot * dims.heel_local();
-    let ball = ik.end + foot * dims.ball_local();
-    let toe_tip = ball + toe * DVec3::new(dims.toe_length(), 0.0, 0.0);
-    LegPose {
-        hip,
-        knee: ik.middle,
-        ankle: ik.end,
-        swivel: ik.swivel,
-        foot,
-        toe,
-        heel,
-        ball,
-        toe_tip,
-        reached: ik.reached,
-        target,
-    }
-}
-
-/// World rotation of a bone pointing along `along` (its rest direction is −y) with its local
-/// z on `hinge`.
-#[must_use]
-pub fn bone_frame(along: DVec3, hinge: DVec3) -> DQuat {
-    let y = (-along).normalize();
-    let z = (hinge - y * y.dot(hinge)).normalize();
-    let x = y.cross(z);
-    DQuat::from_mat3(&glam::DMat3::from_cols(x, y, z))
 }
 
 #[cfg(test)]

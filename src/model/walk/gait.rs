@@ -1,0 +1,278 @@
+//! The walk's rules at one moment, without its clock: the resolved parameters, the design
+//! curves and the live cycle curves, and what they give — the pelvis under a plan, a leg's IK
+//! target in each phase, a stance leg projected forward.
+//!
+//! Why its own type: the optimiser costs candidate pelvis positions by running exactly this
+//! code forward (spec §8), and must borrow it without the [`Walker`](super::Walker) that
+//! calls the optimiser. The walker owns one and delegates to it.
+
+use crate::model::body::Side;
+use crate::model::curve::{Curve, LiveCurve};
+use crate::model::gait_curves::{CurveName, CurveSet};
+use crate::model::ik::softened_distance;
+use crate::model::params::Resolved;
+use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
+use crate::model::walk::pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
+use crate::model::walk::pose::solve_leg;
+use glam::{DQuat, DVec3};
+
+/// Stride the heel-rise curve is designed for (m) [fig 6.5].
+pub const HEEL_RISE_DESIGN_STRIDE_M: f64 = 1.8;
+/// Steepest heel rise the stance leg may take to reach (rad).
+pub const MAX_HEEL_RISE: f64 = 1.45;
+
+/// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
+/// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
+const REACH_EASE: f64 = 0.995;
+
+/// The cycle curves played live, in real units (rad or m).
+#[derive(Clone, Debug)]
+pub(crate) struct LiveCurves {
+    pub(crate) obliquity: LiveCurve,
+    pub(crate) rotation: LiveCurve,
+    pub(crate) tilt: LiveCurve,
+    pub(crate) lateral: LiveCurve,
+    pub(crate) shoulder: [LiveCurve; 2],
+    pub(crate) elbow: [LiveCurve; 2],
+}
+
+/// Real-unit cycle curves for a parameter set.
+pub(crate) fn cycle_targets(design: &CurveSet, r: &Resolved) -> [Curve; 6] {
+    let half = |name: CurveName, range: f64| design.get(name).scaled(1.0, 0.5 * range);
+    let mut elbow = half(CurveName::Elbow, r.elbow_range);
+    elbow.offset_y(r.elbow_min_flex + 0.5 * r.elbow_range);
+    [
+        half(CurveName::PelvisObliquity, r.obliquity_range),
+        half(CurveName::PelvisRotation, r.rotation_range),
+        half(CurveName::PelvisTilt, r.tilt_range),
+        half(CurveName::PelvisLateral, r.lateral_range),
+        half(CurveName::Shoulder, r.shoulder_range),
+        elbow,
+    ]
+}
+
+/// The pelvis's forward and vertical design curves.
+#[must_use]
+pub(crate) fn trajectory_curves(design: &CurveSet) -> TrajectoryCurves {
+    TrajectoryCurves {
+        forward_ds_ms: design.get(CurveName::PelvisForwardDsMs).clone(),
+        forward_ms_ds: design.get(CurveName::PelvisForwardMsDs).clone(),
+        vertical: design.get(CurveName::PelvisVertical).clone(),
+    }
+}
+
+/// The walk's rules at one moment (see the module docs).
+#[derive(Clone, Debug)]
+pub struct Gait {
+    pub(crate) r: Resolved,
+    pub(crate) design: CurveSet,
+    pub(crate) traj: TrajectoryCurves,
+    pub(crate) live: LiveCurves,
+}
+
+impl Gait {
+    /// The resolved parameters in force.
+    #[must_use]
+    pub fn resolved(&self) -> &Resolved {
+        &self.r
+    }
+
+    /// Forward position and height of the pelvis at `phase` under a given plan (the optimiser
+    /// tries candidate plans; the rest of the pose does not depend on the plan).
+    #[must_use]
+    pub fn pelvis_position_with_plan(&self, plan: &PelvisPlan, phase: f64) -> (f64, f64) {
+        plan.position(phase, &self.traj)
+    }
+
+    /// The pelvis at `phase` under a given plan.
+    #[must_use]
+    pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
+        let (x, y) = plan.position(phase, &self.traj);
+        let p = phase.rem_euclid(1.0);
+        let z = self.live.lateral.eval(p);
+        PelvisPose::new(
+            DVec3::new(x, y, z),
+            self.live.rotation.eval(p),
+            self.live.obliquity.eval(p),
+            self.live.tilt.eval(p),
+            0.5 * self.r.dims.hip_width,
+        )
+    }
+
+    /// The IK target of a leg in state `leg` (real, or projected by the optimiser) at master
+    /// phase `phase`: the one place where the four phases turn into ankle targets.
+    #[must_use]
+    pub fn target_of(&self, leg: &LegState, phase: f64, hip: DVec3) -> LegTarget {
+        let r = &self.r;
+        let dims = &r.dims;
+        let q = phase - leg.cycle_start;
+        let ff = &leg.footfall;
+        match leg.phase {
+            LegPhase::LoadingResponse => {
+                let s = (q / r.foot_flat).clamp(0.0, 1.0);
+                let pitch = ff.ground_angle + leg.strike_angle * (1.0 - s);
+                let ankle = leg.anchor - foot_rotation(ff.yaw, pitch) * dims.heel_local();
+                LegTarget { ankle, pitch, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
+            }
+            LegPhase::Midstance => LegTarget {
+                ankle: leg.anchor,
+                pitch: ff.ground_angle,
+                toe_bend: 0.0,
+                yaw: ff.yaw,
+                extra_heel_rise: 0.0,
+            },
+            LegPhase::HeelRise => {
+                let s = ((q - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0);
+                let curve_angle =
+                    (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
+                let ankle_at =
+                    |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
+                let limit = r.reach_margin * dims.leg_reach();
+                let mut angle = curve_angle;
+                // The hip moving past what the curve's heel rise lets the leg reach makes the
+                // foot roll further over the toes. Not by clamping the leg at its limit — that
+                // pins the knee with a corner in every joint's angle, which the optimiser's
+                // squared accelerations then see as a spike wherever it falls between two
+                // samples — but eased in: from REACH_EASE of the limit on, the hip-ankle
+                // distance follows the softening curve that approaches the limit with slope 1
+                // at its start, ramped in over the first tenth of the phase so that nothing
+                // jumps when heel rise begins.
+                let d0 = hip.distance(ankle_at(angle));
+                let ramp = (s / 0.1).clamp(0.0, 1.0);
+                let ramp = ramp * ramp * (3.0 - 2.0 * ramp);
+                let eased = d0 - ramp * (d0 - softened_distance(d0, limit, REACH_EASE));
+                let wanted = eased.min(limit);
+                if d0 > wanted + 1e-12
+                    && let Some(reaching) = heel_rise_to_reach(leg.anchor, ff, dims.ball_local(), hip, wanted, angle)
+                {
+                    angle = reaching;
+                }
+                LegTarget {
+                    ankle: ankle_at(angle),
+                    pitch: ff.ground_angle - angle,
+                    toe_bend: angle,
+                    yaw: ff.yaw,
+                    extra_heel_rise: angle - curve_angle,
+                }
+            }
+            LegPhase::Swing => {
+                let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
+                let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
+                swing_target(plan, s, leg.side, r)
+            }
+        }
+    }
+
+    /// Moves a copy of a stance leg's state forward to master phase `phase` through its stance
+    /// phase changes, with the pelvis of `plan`: what the leg will be doing then, by the same
+    /// code the walk runs. Stops before toe-off (a swing needs planning, not projection).
+    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
+        loop {
+            let end = match leg.phase {
+                LegPhase::LoadingResponse => self.r.foot_flat,
+                LegPhase::Midstance => self.r.heel_rise,
+                LegPhase::HeelRise | LegPhase::Swing => return,
+            };
+            let boundary = leg.cycle_start + end;
+            if phase < boundary {
+                return;
+            }
+            let hip = self.pelvis_with_plan(plan, boundary).hip(leg.side.sign());
+            let pose = solve_leg(&self.r, hip, self.target_of(leg, boundary, hip));
+            enter_stance_phase(leg, &pose, &self.r);
+        }
+    }
+}
+
+impl AsRef<Gait> for Gait {
+    fn as_ref(&self) -> &Gait {
+        self
+    }
+}
+
+/// Moves a stance leg into its next stance phase, given its pose at the boundary: midstance
+/// holds the ankle where loading response left it; heel rise holds the toe joint of the flat
+/// foot and freezes the heel-rise curve's stride scale.
+pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Resolved) {
+    match leg.phase {
+        LegPhase::LoadingResponse => {
+            leg.anchor = pose_at_boundary.target.ankle;
+            leg.phase = LegPhase::Midstance;
+        }
+        LegPhase::Midstance => {
+            leg.anchor = pose_at_boundary.target.ankle
+                + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
+            leg.heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+            leg.phase = LegPhase::HeelRise;
+        }
+        LegPhase::HeelRise | LegPhase::Swing => {}
+    }
+}
+
+/// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
+/// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
+/// line toward the hip line and back, up on the heel-height curve; foot pitched by the ankle
+/// curve; toes back to neutral over the first fifth of the swing.
+#[must_use]
+pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTarget {
+    let from = plan.heel_from;
+    let to = plan.to.heel;
+    let progress = plan.forward.eval(s);
+    let x = from.x + (to.x - from.x) * progress;
+    let line_z = from.z + (to.z - from.z) * progress;
+    let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
+    let z = line_z + (hip_line_z - line_z) * plan.lateral.eval(s);
+    let y = plan.ground_from + plan.heel_height.eval(s);
+    let pitch = plan.ankle_deg.eval(s).to_radians();
+    let heel = DVec3::new(x, y, z);
+    let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
+    // The toes return to neutral over the first fifth of the swing, but never point below
+    // the horizontal while the foot is still pitched down: a toe tip dipping back into the
+    // ground it just left is what a literal linear return would draw.
+    let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
+    LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// The least heel-rise angle ≥ `from` (rad) at which the ankle, swinging about the toe joint
+/// `ball`, comes within `limit` of `hip`; `None` if no angle up to [`MAX_HEEL_RISE`] does.
+///
+/// In the foot's yaw frame the ankle is ball − Rz(g − β)·b, so the squared distance to the hip
+/// is |d|² + |b|² + 2 d·Rz(θ)·b with d = hip − ball, θ = g − β: a sinusoid in θ, solved in
+/// closed form (A cos θ + B sin θ = K) instead of by bisection on every frame.
+#[must_use]
+pub fn heel_rise_to_reach(
+    ball: DVec3,
+    footfall: &Footfall,
+    ball_local: DVec3,
+    hip: DVec3,
+    limit: f64,
+    from: f64,
+) -> Option<f64> {
+    let d = DQuat::from_rotation_y(-footfall.yaw) * (hip - ball);
+    let b = ball_local;
+    let a_coef = d.x * b.x + d.y * b.y;
+    let b_coef = d.y * b.x - d.x * b.y;
+    let k = 0.5 * (limit * limit - d.length_squared() - b.length_squared()) - d.z * b.z;
+    let amplitude = a_coef.hypot(b_coef);
+    if amplitude < 1e-12 || (k / amplitude).abs() > 1.0 {
+        return None;
+    }
+    let phi = b_coef.atan2(a_coef);
+    let spread = (k / amplitude).acos();
+    // Both roots in θ, mapped to β = g − θ and brought into (from − π, from + π].
+    let g = footfall.ground_angle;
+    let wrap = |beta: f64| {
+        let mut x = beta;
+        while x <= from - std::f64::consts::PI {
+            x += std::f64::consts::TAU;
+        }
+        while x > from + std::f64::consts::PI {
+            x -= std::f64::consts::TAU;
+        }
+        x
+    };
+    [wrap(g - (phi + spread)), wrap(g - (phi - spread))]
+        .into_iter()
+        .filter(|beta| *beta >= from - 1e-12 && *beta <= MAX_HEEL_RISE)
+        .min_by(f64::total_cmp)
+}
