@@ -169,7 +169,7 @@ fn a_failed_report_leaves_no_folder_and_bad_input_exits_2() {
 
     let out = gaitlab(&["report", "configs/default.toml", "--cycles", "2"]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("valid: 3 to 2000"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("valid: 3 to 1000"));
     let out = gaitlab(&["report", "configs/default.toml", "--compare", "configs/no_such.toml"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no_such.toml"));

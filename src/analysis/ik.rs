@@ -17,48 +17,20 @@
 //!   the same leg (mm), max (with the frame) and mean — the analytic row is the walk's own
 //!   motion, so a solver's excess over it is its jitter.
 
-use crate::analysis::{Run, run_observed};
+pub use crate::analysis::recording::IkTarget;
+use crate::analysis::recording::{Keep, record};
 use crate::model::body::Side;
-use crate::model::ik::{IkAnswer, IkQuestion, IkSettings, IkSolverKind, LegSolver};
+use crate::model::ik::{IkAnswer, IkSettings, IkSolverKind, LegSolver};
 use crate::model::params::WalkParams;
-use crate::model::walk::{ModelError, ik_question};
+use crate::model::walk::ModelError;
 use std::time::Instant;
-
-/// One IK question the walk asked.
-#[derive(Clone, Copy, Debug)]
-pub struct IkTarget {
-    /// Frame number.
-    pub frame: u64,
-    /// Time (s).
-    pub time_s: f64,
-    /// Which leg.
-    pub side: Side,
-    /// The question.
-    pub question: IkQuestion,
-}
 
 /// Runs the walk (analytic IK) and keeps both legs' IK questions of every frame.
 pub fn collect_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<Vec<IkTarget>, ModelError> {
     let mut reference = params.clone();
     reference.ik.solver = IkSolverKind::Analytic;
-    Ok(run_with_targets(&reference, cycles, fps)?.1)
-}
-
-/// Runs the walk as configured and keeps both legs' IK questions of every frame beside it.
-pub fn run_with_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<(Run, Vec<IkTarget>), ModelError> {
-    let mut targets = Vec::new();
-    let run = run_observed(params, cycles, fps, |walker, frame| {
-        for side in Side::BOTH {
-            let pose = &walker.leg(side).pose;
-            targets.push(IkTarget {
-                frame,
-                time_s: walker.time_s(),
-                side,
-                question: ik_question(pose.hip, pose.target, side),
-            });
-        }
-    })?;
-    Ok((run, targets))
+    let keep = Keep { ik_targets: true, ..Keep::default() };
+    Ok(record(&reference, cycles, fps, keep)?.ik_targets)
 }
 
 /// One solve of one target.

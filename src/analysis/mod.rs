@@ -12,62 +12,22 @@
 
 pub mod events;
 pub mod ik;
+pub mod recording;
+
+pub use recording::{IkTarget, Keep, Recording, record};
 
 use crate::model::body::Side;
 use crate::model::params::WalkParams;
+use crate::model::walk::ModelError;
 use crate::model::walk::frame::{Frame, Support};
-use crate::model::walk::leg::{Footfall, LegPhase};
-use crate::model::walk::{ModelError, StepPlan, Walker};
+use crate::model::walk::leg::LegPhase;
 
-/// A finished headless run.
-#[derive(Clone, Debug)]
-pub struct Run {
-    /// Every frame, frame 0 being the start pose.
-    pub frames: Vec<Frame>,
-    /// Footfalls in order.
-    pub footfalls: Vec<Footfall>,
-    /// Per-step planning decisions.
-    pub step_plans: Vec<StepPlan>,
-    /// IK reach failures over all frames.
-    pub reach_failures: u64,
-    /// Cycle duration (s).
-    pub cycle_s: f64,
-    /// Frames per second.
-    pub fps: f64,
-}
+/// A finished headless run: the name the measuring code has always used for a recording.
+pub type Run = Recording;
 
-/// Runs `cycles` gait cycles at `fps` frames per second.
+/// Runs `cycles` gait cycles at `fps` frames per second, keeping frames, footfalls and plans.
 pub fn run(params: &WalkParams, cycles: f64, fps: f64) -> Result<Run, ModelError> {
-    run_observed(params, cycles, fps, |_, _| {})
-}
-
-/// [`run`], showing the walker to `observe` after every frame (frame 0 included), so a caller
-/// can keep what the frames do not record without walking a second time.
-pub fn run_observed(
-    params: &WalkParams,
-    cycles: f64,
-    fps: f64,
-    mut observe: impl FnMut(&Walker, u64),
-) -> Result<Run, ModelError> {
-    let mut walker = Walker::new(params)?;
-    let cycle_s = walker.resolved().cycle_s;
-    let count = (cycles * cycle_s * fps).round() as u64;
-    let mut frames = Vec::with_capacity(count as usize + 1);
-    frames.push(walker.frame(0));
-    observe(&walker, 0);
-    for i in 1..=count {
-        walker.advance(1.0 / fps);
-        frames.push(walker.frame(i));
-        observe(&walker, i);
-    }
-    Ok(Run {
-        frames,
-        footfalls: walker.footfalls().to_vec(),
-        step_plans: walker.step_plans().to_vec(),
-        reach_failures: walker.reach_failures(),
-        cycle_s,
-        fps,
-    })
+    record(params, cycles, fps, Keep::default())
 }
 
 /// The walk's health checks.

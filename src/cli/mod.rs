@@ -269,11 +269,11 @@ fn report(
         }
     };
     let cycles = cycles.unwrap_or(params.sim.cycles);
-    // A report keeps every frame for its tables and plots: 1000 cycles are ~86 MB and 3 s,
-    // so the bound keeps a report within a few hundred MB (simulate streams any length).
-    if !(3..=2000).contains(&cycles) {
+    // A report records every frame with its full-body pose for its tables and plots (1000
+    // cycles: ~190 MB, 2 s), so the bound keeps it within that (simulate streams any length).
+    if !(3..=1000).contains(&cycles) {
         eprintln!(
-            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 2000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)"
+            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 1000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)"
         );
         return 2;
     }

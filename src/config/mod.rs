@@ -13,7 +13,6 @@ pub mod schema;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::params::{TerrainChoice, WalkParams};
-use crate::model::walk::Walker;
 use schema::{GROUPS, Kind, PARAMS, ParamSpec, Value, did_you_mean, spec};
 use std::collections::HashMap;
 use std::fmt;
@@ -457,7 +456,7 @@ pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
         }
     }
     if out.is_empty()
-        && let Err(e) = Walker::new(p)
+        && let Err(e) = crate::model::walk::check(p)
     {
         out.push((vec!["walk.speed_mps"], e.0));
     }

@@ -7,13 +7,12 @@ pub mod metrics;
 pub mod plots;
 
 use crate::analysis::ik::{self, IkSummary, IkTarget, SolverRun};
-use crate::analysis::{self, Run};
+use crate::analysis::{self, Keep, Recording, Run};
 use crate::config::{self, render::toml_number, schema::PARAMS};
 use crate::model::body::Side;
 use crate::model::ik::IkSolverKind;
 use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
-use crate::model::walk::Walker;
 use crate::output::{self, FolderTarget, OutputError, joint_table};
 use metrics::{LABELS, Summary};
 use std::fmt::Write as _;
@@ -77,10 +76,12 @@ pub fn write_report(
     progress: &mut dyn FnMut(&str),
 ) -> Result<Summary, OutputError> {
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
-    // The IK targets are kept as the walk is run: the report's IK section measures the
-    // solvers on the questions this very walk asked.
-    let (run, ik_targets) = ik::run_with_targets(input.params, f64::from(input.cycles), input.fps)
+    // The walk is recorded once with everything the report reads: the IK section measures
+    // the solvers on the questions this very walk asked, the BVH and the stick figure take
+    // its poses, the optimisation plot its middle step's problem.
+    let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)
         .map_err(|e| OutputError::Failed(e.to_string()))?;
+    let ik_targets = &run.ik_targets;
     let summary = metrics::summarise(&run).map_err(|e| OutputError::Failed(e.to_string()))?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
@@ -98,9 +99,9 @@ pub fn write_report(
     let resolved = input.params.resolve();
     let ik_runs: Vec<SolverRun> = solvers
         .iter()
-        .map(|&solver| ik::run_solver(&ik_targets, solver, &resolved.ik, resolved.dims.thigh, resolved.dims.shank))
+        .map(|&solver| ik::run_solver(ik_targets, solver, &resolved.ik, resolved.dims.thigh, resolved.dims.shank))
         .collect();
-    let terrain = Walker::new(input.params).map_err(|e| OutputError::Failed(e.to_string()))?.terrain().clone();
+    let terrain = &run.terrain;
     output::write_folder(target, FILES, |temp| {
         let file = |rel: &str| temp.join(rel);
         let write = |rel: &str, text: &str| {
@@ -108,25 +109,25 @@ pub fn write_report(
         };
         progress("writing tables");
         write_joints(&file("joints.csv"), &run).map_err(|e| format!("cannot write joints.csv: {e}"))?;
-        write("footfalls.csv", &footfalls_csv(&run, &terrain))?;
+        write("footfalls.csv", &footfalls_csv(&run, terrain))?;
         write("optimisation.csv", &optimisation_csv(&run))?;
-        write("ik.csv", &ik_csv(&ik_targets, &ik_runs))?;
+        write("ik.csv", &ik_csv(ik_targets, &ik_runs))?;
         progress("writing walk.bvh");
-        write_bvh(&file("walk.bvh"), input.params, &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
+        write_bvh(&file("walk.bvh"), &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
         progress("drawing plots");
         let plots = temp.join("plots");
         fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
-        let mut walks = vec![plots::Walk { name: input.name.clone(), run: &run, params: input.params }];
-        walks.extend(others.iter().map(|(name, params, run, _)| plots::Walk { name: name.clone(), run, params }));
+        let mut walks = vec![plots::Walk { name: input.name.clone(), run: &run }];
+        walks.extend(others.iter().map(|(name, _, run, _)| plots::Walk { name: name.clone(), run }));
         plots::write_plots(&plots, &walks)?;
-        plots::write_ik_plot(&plots, &ik_targets, &ik_runs)?;
+        plots::write_ik_plot(&plots, ik_targets, &ik_runs)?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
         write("summary.json", &format!("{json}\n"))?;
         write("config.toml", &config_text(input)?)?;
         let compared: Vec<(&str, &Summary)> = others.iter().map(|(n, _, _, s)| (n.as_str(), s)).collect();
         let ik_summaries: Vec<(IkSolverKind, IkSummary)> =
-            ik_runs.iter().map(|run| (run.solver, run.summary(&ik_targets))).collect();
+            ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         write("summary.md", &summary_md(input, &summary, &compared, &ik_summaries))?;
         Ok(())
     })?;
@@ -145,18 +146,14 @@ fn write_joints(path: &Path, run: &Run) -> io::Result<()> {
     out.flush()
 }
 
-/// Re-walks the run (the frames keep the legs only) and writes every frame's full pose.
-fn write_bvh(path: &Path, params: &WalkParams, run: &Run) -> io::Result<()> {
-    let mut walker = Walker::new(params).map_err(io::Error::other)?;
+/// Writes every recorded frame's full pose.
+fn write_bvh(path: &Path, run: &Recording) -> io::Result<()> {
     let mut out = io::BufWriter::new(fs::File::create(path)?);
-    let dims = walker.resolved().dims.clone();
-    crate::output::bvh::write_header(&mut out, &dims, run.frames.len(), run.fps)?;
+    let dims = &run.gait.resolved().dims;
+    crate::output::bvh::write_header(&mut out, dims, run.poses.len(), run.fps)?;
     let mut line = String::with_capacity(1024);
-    for i in 0..run.frames.len() {
-        if i > 0 {
-            walker.advance(1.0 / run.fps);
-        }
-        crate::output::bvh::write_frame(&mut out, walker.pose(), &mut line)?;
+    for pose in &run.poses {
+        crate::output::bvh::write_frame(&mut out, pose, &mut line)?;
     }
     out.flush()
 }

@@ -11,8 +11,6 @@ use crate::analysis::events as gait_events;
 use crate::analysis::ik::{IkSample, IkTarget, SolverRun};
 use crate::model::body::{Bone, Side};
 use crate::model::gait_curves::CurveName;
-use crate::model::params::WalkParams;
-use crate::model::walk::Walker;
 use crate::model::walk::frame::Frame;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -51,7 +49,6 @@ struct Cycle {
 /// Everything the plots need, prepared once.
 struct Data<'a> {
     run: &'a Run,
-    params: &'a WalkParams,
     /// Heel strikes per side (frame indices), steady ones only (start-up cycle dropped).
     strikes: [Vec<usize>; 2],
     /// Mean % of the right cycle: right toe-off, left heel strike, left toe-off.
@@ -63,7 +60,7 @@ fn strikes_of(frames: &[Frame], side: usize) -> Vec<usize> {
 }
 
 impl<'a> Data<'a> {
-    fn new(run: &'a Run, params: &'a WalkParams) -> Data<'a> {
+    fn new(run: &'a Run) -> Data<'a> {
         let frames = &run.frames;
         let strikes = [strikes_of(frames, 0), strikes_of(frames, 1)];
         let right = &strikes[0];
@@ -83,7 +80,7 @@ impl<'a> Data<'a> {
         events.push(("LHS", pct_of(&|a: &Frame, b: &Frame| gait_events::is_heel_strike(a, b, 1))));
         events.push(("LTO", pct_of(&|a: &Frame, b: &Frame| gait_events::is_toe_off(a, b, 1))));
         events.retain(|e| e.1.is_finite());
-        Data { run, params, strikes, events }
+        Data { run, strikes, events }
     }
 
     /// `value` per frame, normalised to each of `side`'s steady cycles.
@@ -345,13 +342,13 @@ fn sample(curve: &crate::model::curve::Curve, scale: f64) -> Vec<(f64, f64)> {
     (0..=100).map(|p| (p as f64, curve.eval(p as f64 / 100.0) * scale)).collect()
 }
 
-fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>, walker: &Walker) -> Res {
+fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let root = root
         .titled("Swing foot: design curves and each step's terrain-adapted heel height", (FONT, 34))
         .map_err(err)?;
     let areas = root.split_evenly((1, 3));
-    let design = walker.design_curves();
+    let design = d.run.gait.design_curves();
     let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_heel_height, 100.0)).collect();
     curve_chart(
         &areas[0],
@@ -380,11 +377,11 @@ fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>, wa
     root.present().map_err(err)
 }
 
-fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>, walker: &Walker) -> Res {
+fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let root = root.titled("Foot pitch through the swing, and heel rise", (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 2));
-    let design = walker.design_curves();
+    let design = d.run.gait.design_curves();
     let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_ankle_deg, 1.0)).collect();
     curve_chart(
         &areas[0],
@@ -412,16 +409,12 @@ fn stick_figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
     let mid = d.strikes[0].len().saturating_sub(2) / 2;
     let Some(&start) = d.strikes[0].get(mid) else { return root.present().map_err(err) };
     let end = d.strikes[0].get(mid + 1).copied().unwrap_or(frames.len() - 1).min(frames.len() - 1);
-    // Re-walk to the window to have the full-body poses (the frames hold the legs only).
-    let mut walker = Walker::new(d.params).map_err(|e| e.to_string())?;
+    // The recorded full-body poses of the window (the frames hold the legs only).
     let step = ((end - start) / 16).max(1);
-    let mut poses = Vec::new();
-    for i in 1..=end {
-        walker.advance(1.0 / d.run.fps);
-        if i >= start && (i - start) % step == 0 {
-            poses.push((i, walker.pose().clone()));
-        }
-    }
+    let poses: Vec<(usize, &crate::model::body::Pose)> = (start.max(1)..=end)
+        .filter(|i| (i - start) % step == 0)
+        .filter_map(|i| d.run.poses.get(i).map(|p| (i, p)))
+        .collect();
     let x0 = frames[start].pelvis.x - 0.6;
     let x1 = frames[end].pelvis.x + 0.6;
     let ground = frames[start..=end]
@@ -449,7 +442,7 @@ fn stick_figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
         .axis_desc_style((FONT, 22))
         .draw()
         .map_err(err)?;
-    let terrain = walker.terrain().clone();
+    let terrain = &d.run.terrain;
     chart
         .draw_series(std::iter::once(PathElement::new(
             (0..=400)
@@ -530,12 +523,9 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
     let plans = &d.run.step_plans;
     // A representative step: the middle one; its landscape by re-walking to it.
     let target = plans.len() / 2;
-    let mut walker = Walker::new(d.params).map_err(|e| e.to_string())?;
-    while walker.step_plans().len() <= target && walker.time_s() < d.run.frames.last().map_or(0.0, |f| f.time_s) + 1.0 {
-        walker.advance(1.0 / d.run.fps);
-    }
-    if let (Some(problem), Some(plan)) = (walker.last_step_problem(), walker.step_plans().last()) {
-        let mut land = problem.landscape(&walker, 81);
+    let recorded = d.run.step_problems.get(target).and_then(Option::as_ref);
+    if let (Some((problem, gait)), Some(plan)) = (recorded, plans.get(target)) {
+        let mut land = problem.landscape(gait, 81);
         let (lo, hi) = problem.range;
         // The feasible band is often a few centimetres of a range tens of centimetres wide:
         // then the plot shows the band (with one unreachable sample each side), sampled at 41
@@ -553,7 +543,7 @@ fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) 
                         crate::model::optimise::Candidate {
                             x,
                             y: problem.ds.y,
-                            cost: problem.cost(&walker, x, problem.ds.y),
+                            cost: problem.cost(gait, x, problem.ds.y),
                         }
                     })
                     .collect();
@@ -754,20 +744,17 @@ pub struct Walk<'a> {
     pub name: String,
     /// The simulated walk.
     pub run: &'a Run,
-    /// Its parameters.
-    pub params: &'a WalkParams,
 }
 
 /// Writes every plot of [`PLOTS`] into `dir` (which must exist). The first walk is the
 /// report's; others (from `--compare`) are overlaid on the pelvis and joint-angle plots.
 pub fn write_plots(dir: &Path, walks: &[Walk<'_>]) -> Res {
     register_font();
-    let all: Vec<(String, Data<'_>)> = walks.iter().map(|w| (w.name.clone(), Data::new(w.run, w.params))).collect();
+    let all: Vec<(String, Data<'_>)> = walks.iter().map(|w| (w.name.clone(), Data::new(w.run))).collect();
     let d = &all[0].1;
-    let walker = Walker::new(walks[0].params).map_err(|e| e.to_string())?;
     both!(dir, "pelvis", pelvis, &all);
-    both!(dir, "swing_foot", swing_foot, d, &walker);
-    both!(dir, "ankle", ankle, d, &walker);
+    both!(dir, "swing_foot", swing_foot, d);
+    both!(dir, "ankle", ankle, d);
     both!(dir, "joints", joints, &all);
     both!(dir, "stick_figure", stick_figure, d);
     both!(dir, "optimisation", optimisation, d);

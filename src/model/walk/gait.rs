@@ -77,6 +77,12 @@ impl Gait {
         &self.r
     }
 
+    /// The design curves in force (normalised, as drawn in the thesis's figures).
+    #[must_use]
+    pub fn design_curves(&self) -> &CurveSet {
+        &self.design
+    }
+
     /// Forward position and height of the pelvis at `phase` under a given plan (the optimiser
     /// tries candidate plans; the rest of the pose does not depend on the plan).
     #[must_use]

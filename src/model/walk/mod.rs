@@ -109,25 +109,44 @@ pub struct Walker {
     pose: Pose,
 }
 
+/// Checks that `params` make a walk — the curve overrides build, the leg phases come in
+/// order — without building one (config validation asks this of every file), and returns
+/// what a walker starts from.
+pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
+    let r = params.resolve();
+    let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+    if r.toe_off.is_nan() || r.toe_off <= 0.5 {
+        return Err(ModelError(format!(
+            "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
+            r.toe_off
+        )));
+    }
+    if !(0.0 < r.foot_flat && r.foot_flat < r.heel_rise && r.heel_rise < r.toe_off && r.toe_off < 1.0) {
+        return Err(ModelError(format!(
+            "leg phases must come in order: 0 < foot flat ({:.3}) < heel rise ({:.3}) < toe-off ({:.3}) < 1",
+            r.foot_flat, r.heel_rise, r.toe_off
+        )));
+    }
+    Ok((r, design))
+}
+
+/// Walkers built by this process (see [`walkers_built`]).
+static WALKERS_BUILT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many walkers this process has built: lets a test show that a command walks its config
+/// once (a walk is the costly part of every command).
+#[must_use]
+pub fn walkers_built() -> u64 {
+    WALKERS_BUILT.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 impl Walker {
     /// A walker standing in the double support right after a right heel strike, in the
     /// steady-state pose of the walk (the left foot already in heel rise behind), at x = 0.
     pub fn new(params: &WalkParams) -> Result<Self, ModelError> {
-        let r = params.resolve();
-        let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+        WALKERS_BUILT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let (r, design) = check(params)?;
         let terrain = Terrain::new(params.terrain.kind());
-        if r.toe_off.is_nan() || r.toe_off <= 0.5 {
-            return Err(ModelError(format!(
-                "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
-                r.toe_off
-            )));
-        }
-        if !(0.0 < r.foot_flat && r.foot_flat < r.heel_rise && r.heel_rise < r.toe_off && r.toe_off < 1.0) {
-            return Err(ModelError(format!(
-                "leg phases must come in order: 0 < foot flat ({:.3}) < heel rise ({:.3}) < toe-off ({:.3}) < 1",
-                r.foot_flat, r.heel_rise, r.toe_off
-            )));
-        }
         let traj = trajectory_curves(&design);
         let targets = cycle_targets(&design, &r);
         let [obl, rot, tilt, lat, sh, el] = targets;
