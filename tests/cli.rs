@@ -380,3 +380,40 @@ fn a_long_simulate_keeps_its_memory_flat() {
     let long = peak_kb("1500");
     assert!(long < short + 1500, "peak {short} KB at 60 cycles, {long} KB at 1500");
 }
+
+/// A config from a pipe is read once: `gaitlab report <(cat CONFIG)` writes that config's
+/// text into config.toml (it used to read the pipe twice and write an empty one).
+#[test]
+fn a_config_from_a_pipe_is_read_once() {
+    let dir = temp_dir("pipe-config");
+    let out = dir.join("r");
+    let script = format!(
+        "exec {} report <(cat configs/default.toml) --cycles 3 --out {}",
+        env!("CARGO_BIN_EXE_gaitlab"),
+        out.display()
+    );
+    let o = std::process::Command::new("bash")
+        .args(["-c", &script])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let written = std::fs::read_to_string(out.join("config.toml")).unwrap();
+    assert_eq!(written, std::fs::read_to_string("configs/default.toml").unwrap());
+}
+
+/// Inputs that never end are refused quickly with the size limit, by every command.
+#[test]
+fn endless_inputs_as_a_config_are_refused_at_once() {
+    for command in ["check", "simulate", "report", "optimise", "ik"] {
+        let started = std::time::Instant::now();
+        let o = gaitlab(&[command, "/dev/zero"]);
+        assert_eq!(o.status.code(), Some(2), "{command}: {}", text(&o.stderr));
+        assert!(
+            text(&o.stderr).contains("/dev/zero") && text(&o.stderr).contains("1 MiB"),
+            "{command}: {}",
+            text(&o.stderr)
+        );
+        assert!(started.elapsed().as_secs_f64() < 2.0, "{command} took {:?}", started.elapsed());
+    }
+}

@@ -212,6 +212,15 @@ pub fn load_config(path: &Path, sets: &[String]) -> Result<WalkParams, ExitCode>
     })
 }
 
+/// Loads a config with overrides, keeping its text (read once: a pipe or FIFO gives its
+/// bytes only once); problems printed, `Err` carries exit code 2.
+pub fn load_config_with_text(path: &Path, sets: &[String]) -> Result<(String, WalkParams), ExitCode> {
+    config::load_with_text(path, sets).map_err(|e| {
+        report_config_errors(&e);
+        2
+    })
+}
+
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
@@ -257,8 +266,8 @@ fn report(
     sets: &[String],
 ) -> ExitCode {
     use std::io::IsTerminal;
-    let params = match load_config(path, sets) {
-        Ok(p) => p,
+    let (source_text, params) = match load_config_with_text(path, sets) {
+        Ok(loaded) => loaded,
         Err(code) => return code,
     };
     let ik_solvers = match ik_solvers.map(ik::parse_solvers).transpose() {
@@ -277,13 +286,6 @@ fn report(
         );
         return 2;
     }
-    let source_text = match std::fs::read_to_string(path) {
-        Ok(t) => t,
-        Err(e) => {
-            eprintln!("{}: cannot read: {e}", path.display());
-            return 2;
-        }
-    };
     let mut others = Vec::new();
     for other in compare {
         match load_config(other, sets) {

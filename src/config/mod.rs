@@ -5,20 +5,26 @@
 //! table in [`schema`], so every problem in a file is reported at once, in file order, and
 //! unknown keys get a "did you mean".
 
+pub mod checks;
+pub mod echo;
 pub mod edit;
 pub mod presets;
 pub mod render;
 pub mod schema;
+pub mod source;
 
-use crate::model::curve::Curve;
+pub use checks::{check_curve, cross_check};
+pub use source::{MAX_CONFIG_BYTES, READ_DEADLINE, decode_source, read_source};
+
 use crate::model::gait_curves::CurveName;
-use crate::model::params::{TerrainChoice, WalkParams};
+use crate::model::params::WalkParams;
 use schema::{GROUPS, Kind, PARAMS, ParamSpec, Value, did_you_mean, spec};
+use std::cell::Cell;
 use std::collections::HashMap;
 use std::fmt;
 use std::path::Path;
 use toml::Spanned;
-use toml::de::{DeTable, DeValue};
+use toml::de::{DeString, DeTable, DeValue};
 
 /// One problem in a config, at a place.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,22 +72,67 @@ impl std::error::Error for ConfigErrors {}
 /// A place in a source: (path label, line, column).
 type Place = (String, usize, usize);
 
+/// Most problems listed for one document; reading stops there with a line saying so (a
+/// megabyte of unknown keys would otherwise print a hundred thousand lines, each with its
+/// "did you mean" search).
+pub const MAX_PROBLEMS: usize = 100;
+
 /// Reads TOML into parameters, remembering where each key was set.
 #[derive(Debug, Default)]
 pub struct Loader {
     params: WalkParams,
     places: HashMap<String, Place>,
     errors: Vec<ConfigError>,
+    /// The label of the document read, for problems no key can be blamed for.
+    label: Option<String>,
+}
+
+/// `at` clamped into `text` and moved back onto a character boundary.
+fn char_floor(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
 }
 
 /// Line and column (1-based, in characters) of byte offset `at` in `text`.
 #[must_use]
 pub fn line_col(text: &str, at: usize) -> (usize, usize) {
-    let at = at.min(text.len());
-    let before = &text[..at];
+    let before = &text[..char_floor(text, at)];
     let line = before.matches('\n').count() + 1;
     let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
     (line, col)
+}
+
+/// [`line_col`] for many offsets of one text: line starts found once, and the column counted
+/// on from the last answer when the next offset is later on the same line, so that a
+/// document's problems, asked in order, cost one pass over it however many there are (a
+/// megabyte of `walk = {k0 = 1, k1 = 1, ...}` on one line).
+struct Locator<'t> {
+    text: &'t str,
+    starts: Vec<usize>,
+    /// Last answer: (byte offset, line index, column).
+    last: Cell<(usize, usize, usize)>,
+}
+
+impl<'t> Locator<'t> {
+    fn new(text: &'t str) -> Self {
+        let starts = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
+        Locator { text, starts, last: Cell::new((0, 0, 1)) }
+    }
+
+    fn line_col(&self, at: usize) -> (usize, usize) {
+        let at = char_floor(self.text, at);
+        let line = self.starts.partition_point(|&s| s <= at) - 1;
+        let (from, col) = match self.last.get() {
+            (off, l, col) if l == line && off <= at => (off, col),
+            _ => (self.starts[line], 1),
+        };
+        let col = col + self.text[from..at].chars().count();
+        self.last.set((at, line, col));
+        (line + 1, col)
+    }
 }
 
 impl Loader {
@@ -97,54 +148,66 @@ impl Loader {
         Loader { params, ..Loader::default() }
     }
 
+    /// Records a problem. The key may be user text (an unknown key), so it is echoed cut
+    /// short and escaped; the message is held to one line of [`echo::MESSAGE_CHARS`].
     fn error(&mut self, place: &Place, key: &str, message: impl Into<String>) {
         self.errors.push(ConfigError {
             path: place.0.clone(),
             line: place.1,
             col: place.2,
-            key: key.to_string(),
-            message: message.into(),
+            key: echo::echo(key),
+            message: echo::clip(&message.into(), echo::MESSAGE_CHARS),
         });
     }
 
     /// Reads a whole TOML document.
+    /// A leading byte-order mark is skipped; columns count from after it.
     pub fn read_str(&mut self, text: &str, path: &str) {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        self.label = Some(path.to_string());
+        let locator = Locator::new(text);
         let place = |at: usize| {
-            let (line, col) = line_col(text, at);
+            let (line, col) = locator.line_col(at);
             (path.to_string(), line, col)
         };
         let root = match DeTable::parse(text) {
             Ok(root) => root,
             Err(e) => {
                 let at = e.span().map_or(0, |s| s.start);
-                let message = e.message().trim().to_string();
+                let message = echo::clip(e.message().trim(), echo::MESSAGE_CHARS - 20);
                 self.error(&place(at), "", format!("TOML syntax: {message}"));
                 return;
             }
         };
-        for (group_key, group_value) in root.get_ref() {
+        // In file order (the parsed tables are sorted by key), so that problems are listed
+        // as they come and the first of them are the ones kept.
+        for (group_key, group_value) in in_file_order(root.get_ref()) {
             let group = group_key.get_ref().as_ref();
             let at = place(group_key.span().start);
+            if self.stop_at(&at) {
+                return;
+            }
             // `[keys]` rebinds the terminal lab's keys; the lab reads and checks it itself
             // (key names are a terminal matter), the walk has nothing to take from it.
             if group == "keys" {
                 continue;
             }
             if !GROUPS.contains(&group) {
-                let hint = did_you_mean(group, GROUPS.iter().copied())
-                    .map_or(String::new(), |g| format!("; did you mean [{g}]?"));
-                self.error(&at, group, format!("unknown group{hint} (groups: {})", GROUPS.join(", ")));
+                self.error(&at, group, unknown_group(group));
                 continue;
             }
             let DeValue::Table(table) = group_value.get_ref() else {
                 let found = group_value.get_ref().type_str();
-                let article = if found.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" };
+                let article = echo::article(found);
                 self.error(&at, group, format!("expected a table [{group}], found {article} {found}"));
                 continue;
             };
-            for (key, value) in table {
+            for (key, value) in in_file_order(table) {
                 let name = key.get_ref().as_ref();
                 let at = place(key.span().start);
+                if self.stop_at(&at) {
+                    return;
+                }
                 let value_at = place(value.span().start);
                 if group == "curves" {
                     self.read_curve(name, value, &at, &place);
@@ -155,23 +218,38 @@ impl Loader {
         }
     }
 
+    /// Whether [`MAX_PROBLEMS`] have been found; if so, says so at `at`, where reading stops.
+    fn stop_at(&mut self, at: &Place) -> bool {
+        if self.errors.len() < MAX_PROBLEMS {
+            return false;
+        }
+        self.errors.push(ConfigError {
+            path: at.0.clone(),
+            line: at.1,
+            col: at.2,
+            key: String::new(),
+            message: format!("more problems from here on are not listed (the first {MAX_PROBLEMS} are)"),
+        });
+        true
+    }
+
     /// Reads `[curves.<name>]`: a `points` array of `[x, y]` pairs.
     fn read_curve(&mut self, name: &str, value: &Spanned<DeValue<'_>>, at: &Place, place: &dyn Fn(usize) -> Place) {
         let key = format!("curves.{name}");
         if CurveName::from_key(name).is_none() {
-            let hint = did_you_mean(name, CurveName::ALL.iter().map(|c| c.key()))
-                .map_or(String::new(), |c| format!("; did you mean `{c}`?"));
-            let names: Vec<&str> = CurveName::ALL.iter().map(|c| c.key()).collect();
-            self.error(at, &key, format!("unknown curve{hint} (curves: {})", names.join(", ")));
+            self.error(at, &key, unknown_curve(&key, name));
             return;
         }
         let DeValue::Table(table) = value.get_ref() else {
             self.error(at, &key, "expected a table with `points = [[x, y], ...]`");
             return;
         };
-        for (k, v) in table {
+        for (k, v) in in_file_order(table) {
             let kname = k.get_ref().as_ref();
             let kat = place(k.span().start);
+            if self.stop_at(&kat) {
+                return;
+            }
             if kname != "points" {
                 let hint = if did_you_mean(kname, ["points"]).is_some() { "; did you mean `points`?" } else { "" };
                 self.error(&kat, &format!("{key}.{kname}"), format!("unknown key{hint} (a curve takes only `points`)"));
@@ -213,13 +291,7 @@ impl Loader {
     /// Sets one dotted key from a TOML value, checking type and range.
     fn set_key(&mut self, key: &str, value: &DeValue<'_>, at: &Place, value_at: &Place) {
         let Some(spec) = spec(key) else {
-            let (group, name) = key.split_once('.').unwrap_or((key, ""));
-            let in_group: Vec<&str> = PARAMS.iter().filter(|p| p.group() == group).map(ParamSpec::name).collect();
-            let hint = did_you_mean(name, in_group.iter().copied())
-                .map(|n| format!("; did you mean `{n}`?"))
-                .or_else(|| did_you_mean(key, PARAMS.iter().map(|p| p.key)).map(|k| format!("; did you mean `{k}`?")))
-                .unwrap_or_default();
-            self.error(at, key, format!("unknown key{hint} (keys of [{group}]: {})", in_group.join(", ")));
+            self.error(at, key, unknown_key(key));
             return;
         };
         match parse_value(spec, value) {
@@ -234,7 +306,7 @@ impl Loader {
     /// Applies `--set KEY=VALUE` (`index` counts the `--set`s from 1, for messages).
     pub fn apply_set(&mut self, assignment: &str, index: usize) {
         let label = format!("--set #{index}");
-        let Some((key, value_text)) = assignment.split_once('=') else {
+        let Some((key_text, value_text)) = assignment.split_once('=') else {
             self.error(
                 &(label, 1, 1),
                 assignment,
@@ -242,17 +314,49 @@ impl Loader {
             );
             return;
         };
-        let key = key.trim();
-        let value_col = assignment.find('=').unwrap_or(0) + 2;
-        let at = (label.clone(), 1, 1);
+        let key = key_text.trim();
+        let at = (label.clone(), 1, 1 + (key_text.len() - key_text.trim_start().len()));
+        let value_col = key_text.chars().count()
+            + 2
+            + value_text[..value_text.len() - value_text.trim_start().len()].chars().count();
         let value_at = (label.clone(), 1, value_col);
-        // Plain words are forgiven their missing quotes: `terrain.kind=stairs`.
+        if key.is_empty() {
+            self.error(
+                &at,
+                "",
+                "empty key; expected KEY=VALUE with a dotted key, like walk.speed_mps=1.4 or terrain.kind=\"stairs\"",
+            );
+            return;
+        }
+        let curve = key.strip_prefix("curves.").map(|rest| rest.strip_suffix(".points").unwrap_or(rest));
+        let spec = spec(key);
+        if curve.is_none() && spec.is_none() {
+            // Name the key's fault before looking at the value.
+            let message = match key.split_once('.') {
+                None if GROUPS.contains(&key) => {
+                    format!("`{key}` is a group; name a key in it, like {}", example_key(key))
+                }
+                None => unknown_key(key),
+                Some(("keys", _)) => {
+                    "the lab's key bindings are set in the config file's [keys] table, not with --set".to_string()
+                }
+                Some((group, _)) if !GROUPS.contains(&group) => unknown_group(group),
+                Some(_) => unknown_key(key),
+            };
+            self.error(&at, key, message);
+            return;
+        }
+        // Plain words are forgiven their missing quotes (`terrain.kind=stairs`), except the
+        // TOML words that are not strings: true and false, and nan and inf for a number key
+        // (which then hears that it needs a finite number, not that "nan" is a string).
         let quoted;
         let mut text = value_text.trim();
+        let numeric = spec.is_some_and(|s| matches!(s.kind, Kind::Real { .. } | Kind::Int { .. }));
         if !text.is_empty()
             && text.chars().all(|c| c.is_ascii_alphabetic() || c == '_')
             && text != "true"
             && text != "false"
+            && !(numeric && (text == "nan" || text == "inf"))
         {
             quoted = format!("\"{text}\"");
             text = &quoted;
@@ -260,21 +364,15 @@ impl Loader {
         let parsed = match DeValue::parse(text) {
             Ok(v) => v,
             Err(e) => {
-                self.error(&value_at, key, format!("value is not TOML: {}", e.message().trim()));
+                let message = echo::clip(e.message().trim(), echo::MESSAGE_CHARS - 20);
+                self.error(&value_at, key, format!("value is not TOML: {message}"));
                 return;
             }
         };
-        if let Some(rest) = key.strip_prefix("curves.") {
-            let name = rest.strip_suffix(".points").unwrap_or(rest);
-            if CurveName::from_key(name).is_none() {
-                let hint = did_you_mean(name, CurveName::ALL.iter().map(|c| c.key()))
-                    .map_or(String::new(), |c| format!("; did you mean `{c}`?"));
-                self.error(&at, key, format!("unknown curve{hint}"));
-                return;
-            }
-            self.set_curve_points(name, parsed.get_ref(), &value_at);
-        } else {
-            self.set_key(key, parsed.get_ref(), &at, &value_at);
+        match curve {
+            Some(name) if CurveName::from_key(name).is_none() => self.error(&at, key, unknown_curve(key, name)),
+            Some(name) => self.set_curve_points(name, parsed.get_ref(), &value_at),
+            None => self.set_key(key, parsed.get_ref(), &at, &value_at),
         }
     }
 
@@ -294,7 +392,11 @@ impl Loader {
     }
 
     fn first_place(&self) -> Place {
-        self.places.values().min_by_key(|p| (p.1, p.2)).cloned().unwrap_or(("config".into(), 1, 1))
+        self.places
+            .values()
+            .min_by_key(|p| (p.1, p.2))
+            .cloned()
+            .unwrap_or_else(|| (self.label.clone().unwrap_or_else(|| "config".into()), 1, 1))
     }
 
     /// Parameters read so far.
@@ -304,21 +406,90 @@ impl Loader {
     }
 }
 
+/// A parsed table's entries in the order they are written.
+fn in_file_order<'a, 'i>(table: &'a DeTable<'i>) -> Vec<(&'a Spanned<DeString<'i>>, &'a Spanned<DeValue<'i>>)> {
+    let mut entries: Vec<_> = table.iter().collect();
+    entries.sort_by_key(|(k, _)| k.span().start);
+    entries
+}
+
+/// Room for a list in a message about `key`, so that the whole line stays readable.
+fn room(key: &str, before: &str) -> usize {
+    echo::MESSAGE_CHARS.saturating_sub(key.chars().count().min(echo::ECHO_CHARS) + before.chars().count() + 1)
+}
+
+/// The message for an unknown group.
+fn unknown_group(group: &str) -> String {
+    let hint = did_you_mean(group, GROUPS.iter().copied()).map_or(String::new(), |g| format!("; did you mean [{g}]?"));
+    let before = format!("unknown group{hint}");
+    format!("{before} {}", echo::listing("groups", GROUPS, room(group, &before)))
+}
+
+/// The message for an unknown curve (`key` is `curves.<name>`).
+fn unknown_curve(key: &str, name: &str) -> String {
+    let names: Vec<&str> = CurveName::ALL.iter().map(|c| c.key()).collect();
+    let hint = did_you_mean(name, names.iter().copied()).map_or(String::new(), |c| format!("; did you mean `{c}`?"));
+    let before = format!("unknown curve{hint}");
+    format!("{before} {}", echo::listing("curves", &names, room(key, &before)))
+}
+
+/// The message for an unknown dotted key (in a known group or none).
+fn unknown_key(key: &str) -> String {
+    let (group, name) = key.split_once('.').unwrap_or(("", key));
+    let in_group: Vec<&str> = PARAMS.iter().filter(|p| p.group() == group).map(ParamSpec::name).collect();
+    let hint = did_you_mean(name, in_group.iter().copied())
+        .map(|n| format!("; did you mean `{n}`?"))
+        .or_else(|| did_you_mean(key, PARAMS.iter().map(|p| p.key)).map(|k| format!("; did you mean `{k}`?")))
+        .or_else(|| {
+            // A name without its group: `speed_mps` for `walk.speed_mps`.
+            PARAMS.iter().find(|p| p.name() == name).map(|p| format!("; did you mean `{}`?", p.key))
+        })
+        .unwrap_or_default();
+    if in_group.is_empty() {
+        format!("unknown key{hint} (a key is GROUP.NAME, like walk.speed_mps; groups: {})", GROUPS.join(", "))
+    } else {
+        let before = format!("unknown key{hint}");
+        format!("{before} {}", echo::listing(&format!("keys of [{group}]"), &in_group, room(key, &before)))
+    }
+}
+
+/// A key of `group` to show as an example.
+fn example_key(group: &str) -> String {
+    if group == "curves" {
+        return "curves.heel_rise.points=[[0, 0], ...]".into();
+    }
+    PARAMS.iter().find(|p| p.group() == group).map_or_else(String::new, |p| format!("{}=...", p.key))
+}
+
+/// A TOML number as `f64`. An integer too large for `i64` is still a number (a large one);
+/// `None` for anything not a number.
 fn number(v: &DeValue<'_>) -> Option<f64> {
     match v {
         DeValue::Float(f) => f.as_str().replace('_', "").parse::<f64>().ok(),
-        DeValue::Integer(i) => i64::from_str_radix(&i.as_str().replace('_', ""), i.radix()).ok().map(|n| n as f64),
+        DeValue::Integer(i) => {
+            let digits = i.as_str().replace('_', "");
+            match i64::from_str_radix(&digits, i.radix()) {
+                Ok(n) => Some(n as f64),
+                // Only decimal integers carry a sign; the others are unsigned.
+                Err(_) if i.radix() == 10 => digits.parse::<f64>().ok(),
+                Err(_) => Some(f64::INFINITY),
+            }
+        }
         _ => None,
     }
 }
 
+/// A TOML value as a message shows it: literals as written (cut short), others by type.
 fn describe(v: &DeValue<'_>) -> String {
     match v {
-        DeValue::String(s) => format!("\"{s}\""),
-        DeValue::Integer(i) => i.as_str().to_string(),
-        DeValue::Float(f) => f.as_str().to_string(),
+        DeValue::String(s) => echo::quoted(s),
+        DeValue::Integer(i) => echo::echo(&i.to_string()),
+        DeValue::Float(f) => echo::echo(f.as_str()),
         DeValue::Boolean(b) => b.to_string(),
-        other => format!("a {}", other.type_str()),
+        other => {
+            let found = other.type_str();
+            format!("{} {found}", echo::article(found))
+        }
     }
 }
 
@@ -333,10 +504,12 @@ fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
             let Some(x) = number(value) else {
                 return Err(format!("expected a number, found {}; valid: {valid}", describe(value)));
             };
-            if !x.is_finite() {
+            let written_infinite = matches!(value, DeValue::Float(f) if f.as_str().contains("inf"));
+            if x.is_nan() || written_infinite {
                 return Err(format!("{} is not a finite number; valid: {valid}", describe(value)));
             }
-            if x < min || x > max {
+            // Out of range includes literals too large for a float (1e999).
+            if !(min..=max).contains(&x) {
                 return Err(format!("{} is out of range; valid: {valid}", describe(value)));
             }
             Ok(Value::Real(x))
@@ -346,13 +519,12 @@ fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
                 DeValue::Integer(i) => i64::from_str_radix(&i.as_str().replace('_', ""), i.radix()).ok(),
                 _ => None,
             };
-            let Some(n) = n else {
-                return Err(format!("expected a whole number, found {}; valid: {valid}", describe(value)));
-            };
-            if n < min || n > max {
-                return Err(format!("{n} is out of range; valid: {valid}"));
+            match (n, value) {
+                (Some(n), _) if (min..=max).contains(&n) => Ok(Value::Int(n)),
+                // Out of range, or too large for 64 bits.
+                (_, DeValue::Integer(_)) => Err(format!("{} is out of range; valid: {valid}", describe(value))),
+                _ => Err(format!("expected a whole number, found {}; valid: {valid}", describe(value))),
             }
-            Ok(Value::Int(n))
         }
         Kind::Bool => match value {
             DeValue::Boolean(b) => Ok(Value::Bool(*b)),
@@ -367,100 +539,11 @@ fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
                 None => {
                     let hint = did_you_mean(s, words.iter().copied())
                         .map_or(String::new(), |w| format!("; did you mean \"{w}\"?"));
-                    Err(format!("\"{s}\" is not a choice{hint}; valid: {valid}"))
+                    Err(format!("{} is not a choice{hint}; valid: {valid}", echo::quoted(s)))
                 }
             }
         }
     }
-}
-
-/// Checks control points of the named model curve: valid Bézier chain over x ∈ [0, 1], and
-/// for cycle curves, ends that meet.
-pub fn check_curve(name: &str, pairs: &[(f64, f64)]) -> Result<(), String> {
-    let curve = Curve::from_pairs(name, pairs).map_err(|e| e.to_string())?;
-    if curve.x_start() != 0.0 || curve.x_end() != 1.0 {
-        return Err(format!(
-            "curve `{name}` must run from x = 0 to x = 1 (it runs from {} to {})",
-            curve.x_start(),
-            curve.x_end()
-        ));
-    }
-    let kind = CurveName::from_key(name).expect("checked by caller");
-    if kind.is_cyclic() && (curve.eval(0.0) - curve.eval(1.0)).abs() > 1e-9 {
-        return Err(format!(
-            "curve `{name}` repeats every gait cycle, so its ends must meet: y(0) = {} but y(1) = {}",
-            curve.eval(0.0),
-            curve.eval(1.0)
-        ));
-    }
-    Ok(())
-}
-
-/// Checks across keys; each problem names the keys to blame, the first that was set being
-/// reported.
-#[must_use]
-pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
-    let mut out = Vec::new();
-    let r = p.resolve();
-    let speed_keys = |k: &'static str| vec![k, "walk.speed_mps"];
-    let cadence = 120.0 / r.cycle_s;
-    if !(50.0..=160.0).contains(&cadence) {
-        out.push((
-            speed_keys("walk.cadence_spm"),
-            format!(
-                "cadence resolves to {cadence:.1} steps/min (speed {} m/s, stride {:.2} m); valid: 50 to 160",
-                p.walk.speed_mps, r.stride_m
-            ),
-        ));
-    }
-    if !(0.5..=2.0).contains(&r.stride_m) {
-        out.push((
-            speed_keys("walk.stride_m"),
-            format!(
-                "stride resolves to {:.2} m (speed {} m/s, cadence {cadence:.1}); valid: 0.5 to 2.0 m",
-                r.stride_m, p.walk.speed_mps
-            ),
-        ));
-    }
-    if r.toe_off - 0.5 < 0.02 {
-        out.push((
-            speed_keys("legs.toe_off"),
-            format!("toe-off at {:.3} of the cycle leaves almost no double support: that is a run, which gaitlab does not model; valid: toe_off from 0.52", r.toe_off),
-        ));
-    }
-    if r.heel_rise - r.foot_flat < 0.05 {
-        out.push((
-            vec!["legs.heel_rise", "legs.foot_flat"],
-            format!("heel_rise ({}) must come at least 0.05 of a cycle after foot_flat ({})", r.heel_rise, r.foot_flat),
-        ));
-    }
-    if r.toe_off - r.heel_rise < 0.05 {
-        out.push((
-            vec!["legs.toe_off", "legs.heel_rise"],
-            format!("toe_off ({:.3}) must come at least 0.05 of a cycle after heel_rise ({})", r.toe_off, r.heel_rise),
-        ));
-    }
-    if 1.0 - r.toe_off < 0.25 {
-        out.push((
-            vec!["legs.toe_off"],
-            format!("toe_off ({:.3}) leaves a swing shorter than a quarter cycle; valid: up to 0.75", r.toe_off),
-        ));
-    }
-    if p.terrain.kind == TerrainChoice::Stairs {
-        let foot = r.dims.foot_length * r.turnout.cos() + 2.0 * r.clearance + 0.01;
-        if p.terrain.run_m < foot {
-            out.push((
-                vec!["terrain.run_m", "terrain.kind"],
-                format!("a tread of {} m cannot hold a {:.3} m foot with the clearance on both sides; valid: at least {foot:.3} m", p.terrain.run_m, r.dims.foot_length),
-            ));
-        }
-    }
-    if out.is_empty()
-        && let Err(e) = crate::model::walk::check(p)
-    {
-        out.push((vec!["walk.speed_mps"], e.0));
-    }
-    out
 }
 
 /// Parses a config's text.
@@ -471,18 +554,19 @@ pub fn parse_str(text: &str, path: &str) -> Result<WalkParams, ConfigErrors> {
 }
 
 /// Loads a config file, then applies `--set` overrides, then checks the whole.
+/// The file is read with [`read_source`]: bounded in size and time, UTF-8.
 pub fn load(path: &Path, sets: &[String]) -> Result<WalkParams, ConfigErrors> {
-    let label = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        ConfigErrors(vec![ConfigError {
-            path: label.clone(),
-            line: 1,
-            col: 1,
-            key: String::new(),
-            message: format!("cannot read the config: {e}"),
-        }])
-    })?;
-    load_text(&text, &label, sets)
+    let text = read_source(path)?;
+    load_text(&text, &path.display().to_string(), sets)
+}
+
+/// [`load`], also giving the text read: for callers that keep it (the report's `config.toml`,
+/// the lab's save and key bindings). Reading once matters: a pipe (`<(...)`, a FIFO) has
+/// nothing left for a second read, or blocks it.
+pub fn load_with_text(path: &Path, sets: &[String]) -> Result<(String, WalkParams), ConfigErrors> {
+    let text = read_source(path)?;
+    let params = load_text(&text, &path.display().to_string(), sets)?;
+    Ok((text, params))
 }
 
 /// Parses config text, then applies `--set` overrides, then checks the whole.
@@ -498,6 +582,7 @@ pub fn load_text(text: &str, label: &str, sets: &[String]) -> Result<WalkParams,
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::params::TerrainChoice;
 
     #[test]
     fn line_and_column_count_characters() {

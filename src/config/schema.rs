@@ -4,6 +4,7 @@
 //! TUI's parameter editor. Defaults come from `WalkParams::default()`, never from here.
 
 use crate::model::body::Sex;
+use crate::model::gait_curves::CurveName;
 use crate::model::ik::{IkSolverKind, JacobianVariant};
 use crate::model::params::{CostForm, SearchMethod, TerrainChoice, WalkParams};
 
@@ -366,6 +367,50 @@ pub fn spec(key: &str) -> Option<&'static ParamSpec> {
     PARAMS.iter().find(|p| p.key == key)
 }
 
+/// What a curve override's control points may hold.
+///
+/// Every control point's y lies within `lo..=hi`, so the curve does too (a Bézier curve stays
+/// inside its control points): the walk cannot be handed a pelvis a kilometre up or a foot
+/// turned 800°. Where the walk joins a curve to what comes before and after it, the ends are
+/// fixed: a progress curve runs from 0 to 1, a swing weight starts and ends at 0, the heel
+/// rise starts flat; another end would make the body jump there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurveLimits {
+    /// Least control-point y.
+    pub lo: f64,
+    /// Greatest control-point y.
+    pub hi: f64,
+    /// y at x = 0, if fixed.
+    pub start: Option<f64>,
+    /// y at x = 1, if fixed.
+    pub end: Option<f64>,
+    /// What y is, as messages say it.
+    pub meaning: &'static str,
+}
+
+/// The limits of curve `c`'s control points (see [`CurveLimits`]).
+#[must_use]
+pub fn curve_limits(c: CurveName) -> CurveLimits {
+    use CurveName::*;
+    let limits = |lo, hi, start, end, meaning| CurveLimits { lo, hi, start, end, meaning };
+    match c {
+        // Unit shapes: the matching range parameter is their peak-to-peak size.
+        PelvisObliquity | PelvisRotation | PelvisTilt | PelvisLateral | Shoulder | Elbow => {
+            limits(-1.0, 1.0, None, None, "a unit shape, -1 to 1")
+        }
+        PelvisVertical | PelvisForwardDsMs | PelvisForwardMsDs => {
+            limits(0.0, 1.0, Some(0.0), Some(1.0), "progress from one pelvis key to the next, 0 to 1")
+        }
+        HeelRise => limits(0.0, 90.0, Some(0.0), None, "the foot-ground angle, 0 to 90 deg"),
+        SwingForward => limits(0.0, 1.0, Some(0.0), Some(1.0), "progress from toe-off to the footfall, 0 to 1"),
+        SwingLateral => {
+            limits(0.0, 1.0, Some(0.0), Some(0.0), "a weight from the step-width line to the hip line, 0 to 1")
+        }
+        SwingAnkle => limits(-30.0, 30.0, None, None, "the foot pitch for 15 deg at toe-off, -30 to 30 deg"),
+        SwingHeelHeight => limits(0.0, 0.5, None, None, "the heel height for 0.2 m at toe-off, 0 to 0.5 m"),
+    }
+}
+
 /// The config groups, in order.
 pub const GROUPS: &[&str] = &["body", "walk", "pelvis", "legs", "arms", "ik", "optimiser", "terrain", "sim", "curves"];
 
@@ -387,12 +432,21 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The closest of `candidates` to `word`, if close enough to be a likely typo.
+///
+/// The distance is at least the difference in length, so a word far longer or shorter than a
+/// candidate is passed over without measuring (a megabyte-long key costs one count).
 #[must_use]
 pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let len = word.chars().count();
     candidates
         .into_iter()
-        .map(|c| (edit_distance(word, c), c))
-        .filter(|(d, c)| *d <= (c.len() / 3).max(2))
+        .filter_map(|c| {
+            let most = (c.len() / 3).max(2);
+            if len.abs_diff(c.chars().count()) > most {
+                return None;
+            }
+            Some((edit_distance(word, c), c)).filter(|(d, _)| *d <= most)
+        })
         .min_by_key(|(d, _)| *d)
         .map(|(_, c)| c)
 }

@@ -49,8 +49,9 @@ pub const MARKERS: &[(&str, Marker)] =
 pub fn load_app(config: Option<&Path>, sets: &[String]) -> Result<App, String> {
     match config {
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-            let params = config::load(path, sets).map_err(|e| e.to_string())?;
+            // Read once: a pipe (`gaitlab <(...)`) gives its bytes only once, and the size
+            // limit and deadline of `read_source` keep /dev/zero or a FIFO from hanging the lab.
+            let (text, params) = config::load_with_text(path, sets).map_err(|e| e.to_string())?;
             let keymap = keys::KeyMap::from_config(&text, &path.display().to_string())?;
             let mut app = App::new(params, text, Some(path.to_path_buf()))?;
             app.keymap = keymap;

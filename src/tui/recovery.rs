@@ -50,7 +50,7 @@ pub struct Found {
 pub fn find(config: Option<&Path>) -> Option<Found> {
     let path = path_for(config)?;
     let meta = std::fs::metadata(&path).ok()?;
-    if !meta.is_file() || meta.len() > 1 << 20 {
+    if !meta.is_file() || meta.len() > crate::config::MAX_CONFIG_BYTES {
         return None;
     }
     let text = std::fs::read_to_string(&path).ok()?;
