@@ -1,4 +1,4 @@
-//! The lab over a dropped link: the real binary in a pty made here with `openpty`, so that
+//! The lab (and a long run) in a real terminal: the binary in a pty made here with `openpty`, so that
 //! the test owns every descriptor of the master side and can close it the way sshd or tmux
 //! does when the link goes. The lab must be gone within 1 s, spend under 0.2 s of CPU after
 //! the close, and keep unsaved edits in a recovery file that the next start offers back.
@@ -233,5 +233,35 @@ fn recovered_edits_are_offered_on_the_next_start_and_load_to_the_same_parameters
     lab.send(b"q");
     assert!(lab.child.wait().unwrap().success());
     assert_eq!(gaitlab::config::load(&d.join("mine.toml"), &[]).unwrap(), edited);
+    fs::remove_dir_all(&d).unwrap();
+}
+
+/// A long `simulate` shows its progress on a terminal (and only there: the CSV file gets
+/// none of it), and clears the line when done.
+#[test]
+fn a_long_simulate_shows_its_progress_on_a_terminal() {
+    let d = scratch("progress");
+    let mut run = start(BIN, &["simulate", "mine.toml", "--cycles", "3000", "--out", "big.csv"], &d);
+    let deadline = Instant::now() + Duration::from_secs(120);
+    while run.child.try_wait().unwrap().is_none() {
+        run.pump();
+        assert!(Instant::now() < deadline, "simulate did not finish");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    run.pump();
+    assert!(run.child.wait().unwrap().success());
+    let shown = String::from_utf8_lossy(&run.output).into_owned();
+    assert!(shown.contains("gaitlab simulate: frame "), "no progress line on the terminal: {shown:?}");
+    assert!(shown.contains(" %)"), "{shown:?}");
+    assert!(shown.ends_with("\r\x1b[K"), "the progress line is cleared at the end: {shown:?}");
+    let csv = fs::read_to_string(d.join("big.csv")).unwrap();
+    assert!(!csv.contains("gaitlab") && csv.starts_with("frame,time_s"));
+    // Without a terminal (a pipe for stderr) there is no progress at all.
+    let o = Command::new(BIN)
+        .args(["simulate", "mine.toml", "--cycles", "300", "--out", "/dev/null"])
+        .current_dir(&d)
+        .output()
+        .unwrap();
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", String::from_utf8_lossy(&o.stderr));
     fs::remove_dir_all(&d).unwrap();
 }
