@@ -38,6 +38,8 @@ pub(super) fn run(path: &Path, steps: Option<u32>, json: bool, sets: &[String]) 
 /// Walks until `steps` pelvis choices have been made.
 fn walk_steps(params: &WalkParams, steps: usize) -> Result<Vec<StepRecord>, crate::model::walk::ModelError> {
     let mut walker = Walker::new(params)?;
+    // The table's time_us column: the command, not the model, reads the clock.
+    walker.set_clock(Some(std::time::Instant::now));
     // A step is half a cycle; the bound only guards against a walk that stopped planning.
     let frame_limit = ((steps as f64 + 4.0) * walker.resolved().cycle_s * FPS) as u64;
     let mut frame = 0;

@@ -1,6 +1,7 @@
 //! The lab's state and what keys do to it. No terminal here: the loop in `tui/mod.rs` feeds
 //! it keys and time, the widgets in `tui/ui` draw it, and tests drive it directly.
 
+use super::export::Export;
 use super::keys::{Action, KeyMap};
 use super::save;
 use crate::config::render::{derived_value, toml_number};
@@ -231,13 +232,7 @@ pub struct App {
     /// Where exported reports go (`<export_dir>/<config stem>`).
     pub export_dir: PathBuf,
     /// A report being written in the background.
-    export: Option<std::sync::mpsc::Receiver<ExportMsg>>,
-}
-
-/// What the report thread tells the lab.
-enum ExportMsg {
-    Progress(String),
-    Done(Result<PathBuf, String>),
+    export: Option<Export>,
 }
 
 impl App {
@@ -283,6 +278,13 @@ impl App {
     pub fn with_default() -> Result<Self, String> {
         let params = presets::params("default").expect("listed").map_err(|e| e.to_string())?;
         App::new(params, presets::default_text().to_string(), None)
+    }
+
+    /// Shows wall-clock figures (search times): the walk is given a clock to time its pelvis
+    /// searches with. Off in tests, whose screens must repeat.
+    pub fn measure_timings(&mut self) {
+        self.show_timings = true;
+        self.walker.set_clock(Some(std::time::Instant::now));
     }
 
     /// The simulation speed factor.
@@ -361,7 +363,10 @@ impl App {
     /// Starts the walk again from standing with the current parameters.
     pub fn restart(&mut self) {
         match Walker::new(&self.params) {
-            Ok(w) => {
+            Ok(mut w) => {
+                if self.show_timings {
+                    w.set_clock(Some(std::time::Instant::now));
+                }
                 self.walker = w;
                 self.frame_count = 0;
                 self.frame = self.walker.frame(0);
@@ -668,68 +673,24 @@ impl App {
         }
         let stem =
             self.path.as_ref().and_then(|p| p.file_stem()).map_or("lab".into(), |s| s.to_string_lossy().into_owned());
-        let out = self.export_dir.join(&stem);
-        // Checked before the walk is run: a folder that is not a previous report is never
-        // replaced, and the lab says why at once.
-        let target = match crate::report::resolve_out(&out, false) {
-            Ok(t) => t,
-            Err(e) => {
-                self.message = Some(format!("report not written: {e}"));
-                return;
+        match Export::start(&self.export_dir.join(&stem), stem, &self.params, &self.source_text) {
+            Ok(export) => {
+                self.export = Some(export);
+                self.message = Some("report: starting".into());
             }
-        };
-        let params = self.params.clone();
-        let source = self.source_text.clone();
-        let cycles = params.sim.cycles.max(3);
-        let (tx, rx) = std::sync::mpsc::channel();
-        std::thread::spawn(move || {
-            let input = crate::report::ReportInput {
-                name: stem,
-                source_text: &source,
-                params: &params,
-                cycles,
-                fps: params.sim.fps,
-                compare: Vec::new(),
-                ik_solvers: Vec::new(),
-            };
-            let progress_tx = tx.clone();
-            let mut progress = |stage: &str| {
-                let _ = progress_tx.send(ExportMsg::Progress(stage.to_string()));
-            };
-            let result =
-                crate::report::write_report(&input, &target, &mut progress).map(|_| out).map_err(|e| e.to_string());
-            let _ = tx.send(ExportMsg::Done(result));
-        });
-        self.export = Some(rx);
-        self.message = Some("report: starting".into());
+            Err(e) => self.message = Some(format!("report not written: {e}")),
+        }
     }
 
     /// Takes what the report thread has said; returns whether anything changed on screen.
     pub fn poll_export(&mut self) -> bool {
-        let Some(rx) = &self.export else { return false };
-        let mut changed = false;
-        loop {
-            match rx.try_recv() {
-                Ok(ExportMsg::Progress(stage)) => {
-                    self.message = Some(format!("report: {stage}…"));
-                    changed = true;
-                }
-                Ok(ExportMsg::Done(result)) => {
-                    self.message = Some(match result {
-                        Ok(path) => format!("report written to {}", path.display()),
-                        Err(e) => format!("report failed: {e}"),
-                    });
-                    self.export = None;
-                    return true;
-                }
-                Err(std::sync::mpsc::TryRecvError::Empty) => return changed,
-                Err(std::sync::mpsc::TryRecvError::Disconnected) => {
-                    self.message = Some("report failed: the writer stopped".into());
-                    self.export = None;
-                    return true;
-                }
-            }
+        let Some(export) = &self.export else { return false };
+        let Some(news) = export.poll() else { return false };
+        if news.done {
+            self.export = None;
         }
+        self.message = Some(news.message);
+        true
     }
 
     fn rerun_optimiser(&mut self) {

@@ -6,6 +6,7 @@
 //! it draws nothing and sleeps in `poll`.
 
 pub mod app;
+pub mod export;
 pub mod keys;
 pub mod recovery;
 pub mod save;
@@ -97,7 +98,7 @@ pub fn run(options: &Options) -> i32 {
             return 2;
         }
     };
-    app.show_timings = true;
+    app.measure_timings();
     // Checked before a single escape code is written: output redirected to a file must get
     // none of them.
     if let Some(why) = watch::terminal_error() {
