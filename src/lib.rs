@@ -8,9 +8,12 @@
 
 #![warn(missing_docs)]
 
+pub use error::{Error, Result};
+
 pub mod analysis;
 pub mod cli;
 pub mod config;
+pub mod error;
 pub mod model;
 pub mod output;
 pub mod report;

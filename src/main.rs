@@ -1,6 +1,7 @@
 use clap::Parser;
 
-fn main() {
+fn main() -> std::process::ExitCode {
     let cli = gaitlab::cli::Cli::parse();
-    std::process::exit(gaitlab::cli::run(cli));
+    // Returned, not `process::exit`: destructors run and stdout is flushed on the way out.
+    std::process::ExitCode::from(gaitlab::cli::run(cli))
 }

@@ -1,7 +1,9 @@
 //! `gaitlab ik`: every IK solver on the walk's own targets, side by side.
 
-use super::{ExitCode, load_config, stdout_written};
+use super::{in_range, stdout_written};
 use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
+use crate::config;
+use crate::error::{Error, Result};
 use crate::model::ik::{IkSettings, IkSolverKind};
 use serde_json::json;
 use std::io::{self, IsTerminal, Write};
@@ -32,35 +34,13 @@ pub(super) fn run(
     fps: Option<f64>,
     json: bool,
     sets: &[String],
-) -> ExitCode {
-    let params = match load_config(path, sets) {
-        Ok(p) => p,
-        Err(code) => return code,
-    };
-    let solvers = match solvers.map_or_else(|| Ok(IkSolverKind::ALL.to_vec()), parse_solvers) {
-        Ok(s) => s,
-        Err(message) => {
-            eprintln!("gaitlab ik: {message}");
-            return 2;
-        }
-    };
-    let cycles = cycles.unwrap_or(params.sim.cycles);
-    if cycles == 0 || cycles > 10_000 {
-        eprintln!("gaitlab ik: --cycles {cycles} is out of range; valid: 1 to 10000");
-        return 2;
-    }
-    let fps = fps.unwrap_or(params.sim.fps);
-    if !(10.0..=1000.0).contains(&fps) {
-        eprintln!("gaitlab ik: --fps {fps} is out of range; valid: 10 to 1000");
-        return 2;
-    }
-    let targets = match collect_targets(&params, f64::from(cycles), fps) {
-        Ok(t) => t,
-        Err(e) => {
-            eprintln!("{}: {e}", path.display());
-            return 2;
-        }
-    };
+) -> Result<()> {
+    let params = config::load(path, sets)?;
+    let solvers = solvers.map_or_else(|| Ok(IkSolverKind::ALL.to_vec()), parse_solvers).map_err(Error::Usage)?;
+    let cycles = in_range("--cycles", cycles.unwrap_or(params.sim.cycles), 1..=10_000, "1 to 10000")?;
+    let fps = in_range("--fps", fps.unwrap_or(params.sim.fps), 10.0..=1000.0, "10 to 1000")?;
+    let targets = collect_targets(&params, f64::from(cycles), fps)
+        .map_err(|source| Error::Walk { config: path.to_path_buf(), source })?;
     let r = params.resolve();
     // The gradient solver takes seconds over a long walk: say what is running, on a terminal.
     let tty = io::stderr().is_terminal();
@@ -80,7 +60,7 @@ pub(super) fn run(
     } else {
         write_tables(&mut out, path, &r.ik, targets.len(), cycles, fps, &rows)
     };
-    stdout_written("ik", written.and_then(|()| out.flush()))
+    stdout_written(written.and_then(|()| out.flush()))
 }
 
 /// What a solver's own settings are, in one line.

@@ -1,6 +1,7 @@
 //! The `gaitlab` command line: parsing (clap) and the headless commands.
 
 use crate::config::{self, ConfigErrors, presets, render};
+use crate::error::{Error, Result};
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
 use crate::output::{self, FileTarget, joint_table};
@@ -10,9 +11,6 @@ mod ik;
 mod optimise;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
-
-/// What a command ends with: an exit code, with messages already printed.
-pub type ExitCode = i32;
 
 /// gaitlab — a terminal lab for procedural human walking.
 #[derive(Debug, Parser)]
@@ -148,16 +146,12 @@ pub enum Command {
     },
 }
 
-/// The exit code of a command that wrote its output to stdout: a reader that went away (a
-/// closed pipe, `| head`) is not a failure; any other write error is.
-fn stdout_written(command: &str, written: io::Result<()>) -> ExitCode {
+/// A command's stdout output ended: a reader that went away (a closed pipe, `| head`) is not
+/// a failure; any other write error is.
+fn stdout_written(written: io::Result<()>) -> Result<()> {
     match written {
-        Ok(()) => 0,
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => 0,
-        Err(e) => {
-            eprintln!("gaitlab {command}: cannot write to stdout: {e}");
-            1
-        }
+        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(Error::Write { target: "stdout", source: e }),
+        _ => Ok(()),
     }
 }
 
@@ -197,116 +191,128 @@ impl Progress {
     }
 }
 
-/// Prints config problems to stderr.
-fn report_config_errors(errors: &ConfigErrors) {
-    for e in &errors.0 {
-        eprintln!("{e}");
+/// Prints a command's error the way the interface asks: config problems one located line
+/// each, a walk's problem after its config's path, anything else after `gaitlab COMMAND:`.
+fn print_error(command: &str, e: &Error) {
+    match e {
+        Error::Config(errors) => {
+            for line in &errors.0 {
+                eprintln!("{line}");
+            }
+        }
+        Error::Walk { .. } => eprintln!("{e}"),
+        _ if command.is_empty() => eprintln!("gaitlab: {e}"),
+        _ => eprintln!("gaitlab {command}: {e}"),
     }
 }
 
-/// Loads a config with overrides, printing problems; `Err` carries exit code 2.
-pub fn load_config(path: &Path, sets: &[String]) -> Result<WalkParams, ExitCode> {
-    config::load(path, sets).map_err(|e| {
-        report_config_errors(&e);
-        2
-    })
+/// A walker for `params`, its problems blamed on the config at `path`.
+fn walker_for(path: &Path, params: &WalkParams) -> Result<Walker> {
+    Walker::new(params).map_err(|source| Error::Walk { config: path.to_path_buf(), source })
 }
 
-/// Loads a config with overrides, keeping its text (read once: a pipe or FIFO gives its
-/// bytes only once); problems printed, `Err` carries exit code 2.
-pub fn load_config_with_text(path: &Path, sets: &[String]) -> Result<(String, WalkParams), ExitCode> {
-    config::load_with_text(path, sets).map_err(|e| {
-        report_config_errors(&e);
-        2
-    })
+/// Refuses a value out of its range, naming the option and the range.
+fn in_range<T: PartialOrd + std::fmt::Display>(
+    option: &str,
+    value: T,
+    range: std::ops::RangeInclusive<T>,
+    valid: &str,
+) -> Result<T> {
+    if range.contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::Usage(format!("{option} {value} is out of range; valid: {valid}")))
+    }
 }
 
-/// Runs the parsed command line.
-pub fn run(cli: Cli) -> ExitCode {
-    match cli.command {
-        None => lab(cli.config, &cli.lab),
-        Some(Command::Tui { config, lab: args }) => lab(config.or(cli.config), &args),
-        Some(Command::Check { configs, sets }) => check(&configs, &sets),
+/// Runs the parsed command line; returns the exit code (0, 1 or 2), messages printed.
+#[must_use]
+pub fn run(cli: Cli) -> u8 {
+    let (command, result) = match cli.command {
+        None => return lab(cli.config, &cli.lab),
+        Some(Command::Tui { config, lab: args }) => return lab(config.or(cli.config), &args),
+        Some(Command::Check { configs, sets }) => ("check", check(&configs, &sets)),
         Some(Command::Simulate { config, cycles, fps, out, sets }) => {
-            simulate(&config, cycles, fps, out.as_deref(), &sets)
+            ("simulate", simulate(&config, cycles, fps, out.as_deref(), &sets))
         }
-        Some(Command::Optimise { config, steps, json, sets }) => optimise::run(&config, steps, json, &sets),
-        Some(Command::Report { config, out, force, cycles, compare, ik_solvers, sets }) => {
-            report(&config, out.as_deref(), force, cycles, &compare, ik_solvers.as_deref(), &sets)
+        Some(Command::Optimise { config, steps, json, sets }) => {
+            ("optimise", optimise::run(&config, steps, json, &sets))
         }
+        Some(Command::Report { config, out, force, cycles, compare, ik_solvers, sets }) => (
+            "report",
+            report(&ReportArgs {
+                path: &config,
+                out: out.as_deref(),
+                force,
+                cycles,
+                compare: &compare,
+                ik_solvers: ik_solvers.as_deref(),
+                sets: &sets,
+            }),
+        ),
         Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
-            ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets)
+            ("ik", ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets))
         }
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));
             }
-            0
+            ("presets", Ok(()))
         }
-        Some(Command::Init { preset }) => init(preset.as_deref()),
+        Some(Command::Init { preset }) => ("init", init(preset.as_deref())),
+    };
+    match result {
+        Ok(()) => 0,
+        Err(e) => {
+            print_error(command, &e);
+            e.exit_code()
+        }
     }
 }
 
-fn lab(config: Option<PathBuf>, args: &LabArgs) -> ExitCode {
+fn lab(config: Option<PathBuf>, args: &LabArgs) -> u8 {
     let Some(&(_, marker)) = crate::tui::MARKERS.iter().find(|(n, _)| *n == args.marker) else {
         let names: Vec<&str> = crate::tui::MARKERS.iter().map(|(n, _)| *n).collect();
         eprintln!("gaitlab: --marker {}: unknown; valid: {}", args.marker, names.join(", "));
         return 2;
     };
-    crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker })
+    let code = crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker });
+    u8::try_from(code).unwrap_or(1)
 }
 
-fn report(
-    path: &Path,
-    out: Option<&Path>,
+/// `gaitlab report`'s arguments.
+struct ReportArgs<'a> {
+    path: &'a Path,
+    out: Option<&'a Path>,
     force: bool,
     cycles: Option<u32>,
-    compare: &[PathBuf],
-    ik_solvers: Option<&str>,
-    sets: &[String],
-) -> ExitCode {
+    compare: &'a [PathBuf],
+    ik_solvers: Option<&'a str>,
+    sets: &'a [String],
+}
+
+fn report(args: &ReportArgs<'_>) -> Result<()> {
     use std::io::IsTerminal;
-    let (source_text, params) = match load_config_with_text(path, sets) {
-        Ok(loaded) => loaded,
-        Err(code) => return code,
-    };
-    let ik_solvers = match ik_solvers.map(ik::parse_solvers).transpose() {
+    let (source_text, params) = config::load_with_text(args.path, args.sets)?;
+    let ik_solvers = match args.ik_solvers.map(ik::parse_solvers).transpose() {
         Ok(list) => list.unwrap_or_default(),
-        Err(message) => {
-            eprintln!("gaitlab report: --ik-solvers: {message}");
-            return 2;
-        }
+        Err(message) => return Err(Error::Usage(format!("--ik-solvers: {message}"))),
     };
-    let cycles = cycles.unwrap_or(params.sim.cycles);
     // A report records every frame with its full-body pose for its tables and plots (1000
     // cycles: ~190 MB, 2 s), so the bound keeps it within that (simulate streams any length).
-    if !(3..=1000).contains(&cycles) {
-        eprintln!(
-            "gaitlab report: --cycles {cycles} is out of range; valid: 3 to 1000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)"
-        );
-        return 2;
-    }
+    let valid = "3 to 1000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)";
+    let cycles = in_range("--cycles", args.cycles.unwrap_or(params.sim.cycles), 3..=1000, valid)?;
     let mut others = Vec::new();
-    for other in compare {
-        match load_config(other, sets) {
-            Ok(p) => others.push((other.file_stem().map_or("other".into(), |s| s.to_string_lossy().into_owned()), p)),
-            Err(code) => return code,
-        }
+    for other in args.compare {
+        let params = config::load(other, args.sets)?;
+        others.push((other.file_stem().map_or("other".into(), |s| s.to_string_lossy().into_owned()), params));
     }
-    let out = out.map_or_else(|| crate::report::default_out(path), Path::to_path_buf);
-    let target = match crate::report::resolve_out(&out, force) {
-        Ok(t) => t,
-        Err(e) => {
-            eprintln!("gaitlab report: {e}");
-            return e.exit_code();
-        }
-    };
-    if let Err(e) = output::pending::remove_on_signal() {
-        eprintln!("gaitlab report: cannot watch signals: {e}");
-        return 1;
-    }
+    let out = args.out.map_or_else(|| crate::report::default_out(args.path), Path::to_path_buf);
+    let target = crate::report::resolve_out(&out, args.force)?;
+    output::pending::remove_on_signal()
+        .map_err(|e| Error::Output(output::OutputError::Failed(format!("cannot watch signals: {e}"))))?;
     let input = crate::report::ReportInput {
-        name: path.file_stem().map_or("config".into(), |s| s.to_string_lossy().into_owned()),
+        name: args.path.file_stem().map_or("config".into(), |s| s.to_string_lossy().into_owned()),
         source_text: &source_text,
         params: &params,
         cycles,
@@ -320,61 +326,28 @@ fn report(
             eprintln!("gaitlab report: {stage}");
         }
     };
-    match crate::report::write_report(&input, &target, &mut progress) {
-        Ok(_) => {
-            println!("{}", out.display());
-            0
-        }
-        Err(e) => {
-            eprintln!("gaitlab report: {e}");
-            e.exit_code()
-        }
-    }
+    crate::report::write_report(&input, &target, &mut progress)?;
+    println!("{}", out.display());
+    Ok(())
 }
 
-fn check(configs: &[PathBuf], sets: &[String]) -> ExitCode {
-    let mut code = 0;
+fn check(configs: &[PathBuf], sets: &[String]) -> Result<()> {
+    let mut problems = Vec::new();
     for path in configs {
         match config::load(path, sets) {
             Ok(_) => println!("ok: {}", path.display()),
-            Err(e) => {
-                report_config_errors(&e);
-                code = 2;
-            }
+            Err(e) => problems.extend(e.0),
         }
     }
-    code
+    if problems.is_empty() { Ok(()) } else { Err(Error::Config(ConfigErrors(problems))) }
 }
 
-fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Path>, sets: &[String]) -> ExitCode {
-    let params = match load_config(path, sets) {
-        Ok(p) => p,
-        Err(code) => return code,
-    };
-    let fps = fps.unwrap_or(params.sim.fps);
-    if !(10.0..=1000.0).contains(&fps) {
-        eprintln!("gaitlab simulate: --fps {fps} is out of range; valid: 10 to 1000 frames/s");
-        return 2;
-    }
-    let cycles = cycles.unwrap_or(params.sim.cycles);
-    if cycles == 0 || cycles > 100_000 {
-        eprintln!("gaitlab simulate: --cycles {cycles} is out of range; valid: 1 to 100000");
-        return 2;
-    }
-    let target = match out.map_or(Ok(FileTarget::Stdout), FileTarget::resolve) {
-        Ok(t) => t,
-        Err(e) => {
-            eprintln!("gaitlab simulate: {e}");
-            return e.exit_code();
-        }
-    };
-    let mut walker = match Walker::new(&params) {
-        Ok(w) => w,
-        Err(e) => {
-            eprintln!("{}: {e}", path.display());
-            return 2;
-        }
-    };
+fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Path>, sets: &[String]) -> Result<()> {
+    let params = config::load(path, sets)?;
+    let fps = in_range("--fps", fps.unwrap_or(params.sim.fps), 10.0..=1000.0, "10 to 1000 frames/s")?;
+    let cycles = in_range("--cycles", cycles.unwrap_or(params.sim.cycles), 1..=100_000, "1 to 100000")?;
+    let target = out.map_or(Ok(FileTarget::Stdout), FileTarget::resolve)?;
+    let mut walker = walker_for(path, &params)?;
     let frames = (f64::from(cycles) * walker.resolved().cycle_s * fps).round() as u64;
     let mut progress = Progress::new("simulate", frames);
     let mut write = |out: &mut dyn Write| -> io::Result<()> {
@@ -394,39 +367,23 @@ fn simulate(path: &Path, cycles: Option<u32>, fps: Option<f64>, out: Option<&Pat
         }
         out.flush()
     };
-    if let Err(e) = output::pending::remove_on_signal() {
-        eprintln!("gaitlab simulate: cannot watch signals: {e}");
-        return 1;
-    }
+    output::pending::remove_on_signal()
+        .map_err(|e| Error::Output(output::OutputError::Failed(format!("cannot watch signals: {e}"))))?;
     let result = output::write_file(&target, &mut write);
     progress.done();
-    match result {
-        Ok(()) => 0,
-        Err(e) => {
-            eprintln!("gaitlab simulate: {e}");
-            e.exit_code()
-        }
-    }
+    Ok(result?)
 }
 
-fn init(preset: Option<&str>) -> ExitCode {
+fn init(preset: Option<&str>) -> Result<()> {
     let name = preset.unwrap_or("default");
     let Some(text) = presets::text(name) else {
         let names: Vec<&str> = presets::PRESETS.iter().map(|(n, _)| *n).collect();
         let hint = config::schema::did_you_mean(name, names.iter().copied())
             .map_or(String::new(), |n| format!("did you mean `{n}`? "));
-        eprintln!("gaitlab init: no preset `{name}`; {hint}presets: {}", names.join(", "));
-        return 2;
+        return Err(Error::Usage(format!("no preset `{name}`; {hint}presets: {}", names.join(", "))));
     };
-    match presets::params(name).expect("listed") {
-        Ok(params) => {
-            let description = if name == "default" { presets::DEFAULT_DESCRIPTION } else { presets::description(text) };
-            print!("{}", render::render(&params, &format!("preset: {description}")));
-            0
-        }
-        Err(e) => {
-            report_config_errors(&e);
-            1
-        }
-    }
+    let params = presets::params(name).expect("listed")?;
+    let description = if name == "default" { presets::DEFAULT_DESCRIPTION } else { presets::description(text) };
+    print!("{}", render::render(&params, &format!("preset: {description}")));
+    Ok(())
 }

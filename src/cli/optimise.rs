@@ -1,6 +1,8 @@
 //! `gaitlab optimise`: the per-step pelvis choices of a walk, as a table or JSON lines.
 
-use super::{ExitCode, load_config, stdout_written};
+use super::{in_range, stdout_written};
+use crate::config;
+use crate::error::{Error, Result};
 use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::WalkParams;
 use crate::model::walk::Walker;
@@ -12,27 +14,15 @@ use std::path::Path;
 /// which a toe-off is detected, and 60 fps is what the lab runs at.
 const FPS: f64 = 60.0;
 
-pub(super) fn run(path: &Path, steps: Option<u32>, json: bool, sets: &[String]) -> ExitCode {
-    let params = match load_config(path, sets) {
-        Ok(p) => p,
-        Err(code) => return code,
-    };
-    let steps = steps.unwrap_or(2 * params.sim.cycles);
-    if steps == 0 || steps > 100_000 {
-        eprintln!("gaitlab optimise: --steps {steps} is out of range; valid: 1 to 100000");
-        return 2;
-    }
-    let records = match walk_steps(&params, steps as usize) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("{}: {e}", path.display());
-            return 2;
-        }
-    };
+pub(super) fn run(path: &Path, steps: Option<u32>, json: bool, sets: &[String]) -> Result<()> {
+    let params = config::load(path, sets)?;
+    let steps = in_range("--steps", steps.unwrap_or(2 * params.sim.cycles), 1..=100_000, "1 to 100000")?;
+    let records =
+        walk_steps(&params, steps as usize).map_err(|source| Error::Walk { config: path.to_path_buf(), source })?;
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let written = if json { write_json(&mut out, &records) } else { write_table(&mut out, path, &params, &records) };
-    stdout_written("optimise", written.and_then(|()| out.flush()))
+    stdout_written(written.and_then(|()| out.flush()))
 }
 
 /// Walks until `steps` pelvis choices have been made.

@@ -115,6 +115,8 @@ impl std::fmt::Display for TooShort {
     }
 }
 
+impl std::error::Error for TooShort {}
+
 fn mean(values: impl IntoIterator<Item = f64>) -> f64 {
     let (sum, n) = values.into_iter().fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
     if n == 0 { 0.0 } else { sum / n as f64 }

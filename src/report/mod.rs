@@ -13,8 +13,9 @@ use crate::model::body::Side;
 use crate::model::ik::IkSolverKind;
 use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
+use crate::model::walk::ModelError;
 use crate::output::{self, FolderTarget, OutputError, joint_table};
-use metrics::{LABELS, Summary};
+use metrics::{LABELS, Summary, TooShort};
 use std::fmt::Write as _;
 use std::fs;
 use std::io::{self, Write};
@@ -74,21 +75,20 @@ pub fn write_report(
     input: &ReportInput<'_>,
     target: &FolderTarget,
     progress: &mut dyn FnMut(&str),
-) -> Result<Summary, OutputError> {
+) -> crate::Result<Summary> {
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
     // The walk is recorded once with everything the report reads: the IK section measures
     // the solvers on the questions this very walk asked, the BVH and the stick figure take
     // its poses, the optimisation plot its middle step's problem.
-    let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)
-        .map_err(|e| OutputError::Failed(e.to_string()))?;
+    let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)?;
     let ik_targets = &run.ik_targets;
-    let summary = metrics::summarise(&run).map_err(|e| OutputError::Failed(e.to_string()))?;
+    let summary = metrics::summarise(&run)?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
         progress(&format!("simulating {name} for comparison"));
         let run = analysis::run(params, f64::from(input.cycles), input.fps)
-            .map_err(|e| OutputError::Failed(format!("{name}: {e}")))?;
-        let summary = metrics::summarise(&run).map_err(|e| OutputError::Failed(format!("{name}: {e}")))?;
+            .map_err(|e| crate::Error::Model(ModelError(format!("{name}: {e}"))))?;
+        let summary = metrics::summarise(&run).map_err(|e| TooShort(format!("{name}: {e}")))?;
         others.push((name.clone(), params, run, summary));
     }
     let solvers = input.ik_solvers();

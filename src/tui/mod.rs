@@ -127,9 +127,13 @@ pub fn run(options: &Options) -> i32 {
     }
     let guard = TerminalGuard;
     let result = event_loop(&mut app, options, &watch);
-    if !watch.stop_requested() {
+    if app.quit {
         // Quit on purpose: whatever was left unsaved was the user's choice.
         watch.publish(None);
+    } else if result.is_err() {
+        // The terminal failed under the loop (a dropped link can end crossterm's read with
+        // an error before the watch sees the hang-up): the edits go to the recovery file.
+        watch.keep_unsaved();
     }
     watch.loop_done();
     drop(guard);

@@ -166,6 +166,12 @@ impl Watch {
         guard.1 = text;
     }
 
+    /// Writes the unsaved edits to the recovery file now: the loop itself found the terminal
+    /// gone (crossterm returned an error rather than spinning) before the watch did.
+    pub fn keep_unsaved(&self) {
+        self.shared.write_recovery();
+    }
+
     /// Whether the loop should stop (a signal or a lost terminal).
     #[must_use]
     pub fn stop_requested(&self) -> bool {
