@@ -16,7 +16,7 @@ const MAX_FILE_LINES: usize = 600;
 const MAX_FN_LINES: usize = 80;
 
 /// Files over [`MAX_FILE_LINES`] today, with their line count (issue 11 splits them).
-const LONG_FILES: &[(&str, usize)] = &[("model/walk/mod.rs", 1055), ("report/plots.rs", 769), ("tui/app.rs", 850)];
+const LONG_FILES: &[(&str, usize)] = &[("model/walk/mod.rs", 1055), ("report/plots.rs", 769), ("tui/app.rs", 794)];
 
 /// Functions over [`MAX_FN_LINES`] today (file, function), with their line count.
 const LONG_FNS: &[(&str, &str, usize)] = &[
@@ -26,8 +26,6 @@ const LONG_FNS: &[(&str, &str, usize)] = &[
     ("report/mod.rs", "summary_md", 85),
     ("report/plots.rs", "stick_figure", 117),
     ("report/plots.rs", "optimisation", 145),
-    ("tui/app.rs", "perform", 84),
-    ("tui/app.rs", "on_overlay_key", 98),
     ("tui/ui/panels.rs", "draw_optimiser", 98),
     ("tui/ui/panels.rs", "draw_overlay", 92),
     ("tui/ui/walk.rs", "draw_canvas", 83),

@@ -28,8 +28,14 @@ fn screen(app: &App, width: u16, height: u16) -> String {
         .join("\n")
 }
 
+/// One key through the lab as its event loop does it: the state's update, then the effects
+/// it asks for (saves, the report thread).
+fn press(app: &mut App, key: KeyEvent) {
+    gaitlab::tui::effects::step(app, gaitlab::tui::app::Msg::Key(key));
+}
+
 fn key(app: &mut App, code: KeyCode) {
-    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+    press(app, KeyEvent::new(code, KeyModifiers::NONE));
 }
 
 fn keys(app: &mut App, text: &str) {
@@ -195,7 +201,7 @@ fn a_key_script_changes_a_parameter_the_walk_the_curve_and_the_saved_file_and_un
     for _ in 0..3 {
         key(&mut app, KeyCode::Right);
     }
-    app.on_key(KeyEvent::new(KeyCode::Right, KeyModifiers::SHIFT));
+    press(&mut app, KeyEvent::new(KeyCode::Right, KeyModifiers::SHIFT));
     let expected = 3.0 + 13.0 * fine;
     assert!((app.params.pelvis.tilt_range_deg - expected).abs() < 1e-9, "{}", app.params.pelvis.tilt_range_deg);
     assert_eq!(app.walker.params().pelvis.tilt_range_deg, app.params.pelvis.tilt_range_deg);
@@ -222,7 +228,7 @@ fn a_key_script_changes_a_parameter_the_walk_the_curve_and_the_saved_file_and_un
     assert_eq!(app.params.pelvis.tilt_range_deg, 3.0);
     assert_eq!(app.walker.params().pelvis.tilt_range_deg, 3.0);
     assert!(app.is_modified());
-    app.on_key(KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL));
+    press(&mut app, KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL));
     assert!((app.params.pelvis.tilt_range_deg - (3.0 + fine)).abs() < 1e-9);
     // Quitting now asks; esc stays, y quits.
     key(&mut app, KeyCode::Char('q'));
@@ -297,7 +303,7 @@ fn a_configs_keys_table_rebinds_keys_and_bad_entries_are_named() {
     assert!(!app.quit, "q is no longer quit");
     key(&mut app, KeyCode::Char('p'));
     assert!(app.paused && app.overlay.is_none(), "p pauses now, not presets");
-    app.on_key(KeyEvent::new(KeyCode::Char(' '), KeyModifiers::CONTROL));
+    press(&mut app, KeyEvent::new(KeyCode::Char(' '), KeyModifiers::CONTROL));
     assert!(!app.paused);
     assert_eq!(app.keymap.keys_of(gaitlab::tui::keys::Action::Presets), "(unbound)");
     key(&mut app, KeyCode::Char('Q'));
@@ -422,4 +428,54 @@ fn the_embedded_default_saves_to_a_typed_path_and_a_bad_path_is_reported_inline(
     assert_eq!(reloaded.walk.speed_mps, edited);
     assert!(!std::fs::read_dir(&dir).unwrap().any(|e| e.unwrap().file_name().to_string_lossy().contains(".tmp")));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The lab's state writes nothing and starts nothing itself: `update` returns the effects a
+/// key asks for, and only running them touches the disk.
+#[test]
+fn the_labs_state_asks_for_effects_and_the_loop_runs_them() {
+    use gaitlab::tui::app::{Effect, Msg};
+    let dir = std::env::temp_dir().join(format!("gaitlab-effects-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("mine.toml");
+    std::fs::write(&path, "[walk]\nspeed_mps = 1.3\n").unwrap();
+    let mut app = load_app(Some(&path), &[]).unwrap();
+    select(&mut app, "walk.speed_mps");
+    let edit = app.update(Msg::Key(KeyEvent::new(KeyCode::Right, KeyModifiers::NONE)));
+    assert!(edit.is_empty(), "an edit is state only");
+    let effects = app.update(Msg::Key(KeyEvent::new(KeyCode::Char('s'), KeyModifiers::NONE)));
+    let [Effect::Save { path: to, text, keys: 1, .. }] = &effects[..] else { panic!("{effects:?}") };
+    assert_eq!(to, &path);
+    assert!(text.contains("speed_mps = 1.31"));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "[walk]\nspeed_mps = 1.3\n", "nothing written yet");
+    assert!(app.is_modified());
+    gaitlab::tui::effects::run(&mut app, effects);
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "[walk]\nspeed_mps = 1.31\n");
+    assert!(!app.is_modified());
+    assert_eq!(app.message.as_deref(), Some(format!("saved {} (1 key)", path.display()).as_str()));
+    // The report: asked for, not started, until the effect runs.
+    app.export_dir = dir.join("reports");
+    let effects = app.update(Msg::Key(KeyEvent::new(KeyCode::Char('e'), KeyModifiers::NONE)));
+    assert!(matches!(&effects[..], [Effect::Export { .. }]), "{effects:?}");
+    assert!(!app.exporting());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The value editor opens with the value selected: typing replaces it (no backspacing),
+/// an arrow keeps it for editing.
+#[test]
+fn typing_in_the_editor_replaces_the_selected_value() {
+    let mut app = walked(None, 5);
+    select(&mut app, "walk.speed_mps");
+    key(&mut app, KeyCode::Enter);
+    keys(&mut app, "1.45");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.params.walk.speed_mps, 1.45);
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::End);
+    key(&mut app, KeyCode::Backspace);
+    keys(&mut app, "2");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.params.walk.speed_mps, 1.42);
 }

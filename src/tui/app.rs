@@ -3,7 +3,9 @@
 
 use super::export::Export;
 use super::keys::{Action, KeyMap};
+pub use super::msg::{AfterSave, Effect, Msg};
 use super::save;
+use super::text_input::TextInput;
 use crate::config::render::{derived_value, toml_number};
 use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
 use crate::config::{self, Loader, presets};
@@ -12,7 +14,7 @@ use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::Walker;
 use crate::model::walk::frame::Frame;
-use ratatui::crossterm::event::{KeyCode, KeyEvent};
+use ratatui::crossterm::event::KeyEvent;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
@@ -67,15 +69,15 @@ pub enum Overlay {
     Help,
     /// Typing a value for the selected key.
     Typing {
-        /// Text typed so far.
-        text: String,
+        /// The field (pre-filled with the value, selected).
+        text: TextInput,
         /// Why the last Enter was refused.
         error: Option<String>,
     },
     /// Typing a path to save to.
     SavePath {
-        /// Text typed so far.
-        text: String,
+        /// The field (pre-filled, selected).
+        text: TextInput,
         /// Why the last Enter was refused.
         error: Option<String>,
     },
@@ -233,6 +235,8 @@ pub struct App {
     pub export_dir: PathBuf,
     /// A report being written in the background.
     export: Option<Export>,
+    /// Effects asked for while handling the current message (taken by [`App::update`]).
+    pub(super) effects: Vec<Effect>,
 }
 
 impl App {
@@ -269,6 +273,7 @@ impl App {
             keymap: KeyMap::default(),
             export_dir: PathBuf::from("reports"),
             export: None,
+            effects: Vec::new(),
         };
         app.record_trace();
         Ok(app)
@@ -379,8 +384,24 @@ impl App {
         }
     }
 
+    /// Takes one message and returns the effects it asks for (run them with
+    /// `tui::effects::run`, or use `tui::effects::step`).
+    #[must_use]
+    pub fn update(&mut self, msg: Msg) -> Vec<Effect> {
+        match msg {
+            Msg::Key(key) => self.on_key(key),
+            Msg::Saved { path, text, keys, after, result } => self.saved(path, text, keys, after, result),
+            Msg::ExportStarted(Ok(export)) => {
+                self.export = Some(export);
+                self.message = Some("report: starting".into());
+            }
+            Msg::ExportStarted(Err(e)) => self.message = Some(format!("report not written: {e}")),
+        }
+        std::mem::take(&mut self.effects)
+    }
+
     /// Handles one key press.
-    pub fn on_key(&mut self, key: KeyEvent) {
+    fn on_key(&mut self, key: KeyEvent) {
         if let Some(overlay) = self.overlay.take() {
             self.on_overlay_key(overlay, key);
             return;
@@ -419,7 +440,7 @@ impl App {
             Action::Edit => {
                 let spec = &PARAMS[self.selected];
                 let text = self.value_text(spec);
-                self.overlay = Some(Overlay::Typing { text, error: None });
+                self.overlay = Some(Overlay::Typing { text: TextInput::prefilled(text), error: None });
             }
             Action::Reset => {
                 let spec = &PARAMS[self.selected];
@@ -430,25 +451,15 @@ impl App {
             Action::Redo => self.redo(),
             Action::Save => match self.path.clone() {
                 Some(_) => self.save(),
-                None => self.overlay = Some(Overlay::SavePath { text: "my_walk.toml".into(), error: None }),
+                None => {
+                    self.overlay = Some(Overlay::SavePath { text: TextInput::prefilled("my_walk.toml"), error: None })
+                }
             },
             Action::SaveAs => {
                 let text = self.path.as_ref().map_or("my_walk.toml".into(), |p| p.display().to_string());
-                self.overlay = Some(Overlay::SavePath { text, error: None });
+                self.overlay = Some(Overlay::SavePath { text: TextInput::prefilled(text), error: None });
             }
-            Action::Presets => {
-                let items =
-                    presets::PRESETS.iter().map(|(n, t)| format!("{n:<12} {}", presets::description(t))).collect();
-                self.overlay = Some(Overlay::Pick { what: PickKind::Preset, items, selected: 0 });
-            }
-            Action::Terrain => {
-                let spec = config::schema::spec("terrain.kind").expect("a key");
-                let Kind::Choice(words) = spec.kind else { return };
-                let current = self.value_text(spec);
-                let selected = words.iter().position(|w| *w == current).unwrap_or(0);
-                let items = words.iter().map(|w| (*w).to_string()).collect();
-                self.overlay = Some(Overlay::Pick { what: PickKind::Terrain, items, selected });
-            }
+            Action::Presets | Action::Terrain => self.open_picker(action == Action::Terrain),
             Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
             Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
             Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
@@ -473,6 +484,21 @@ impl App {
                 self.set_value(spec, &Value::Word(next.name()));
             }
         }
+    }
+
+    /// Opens the preset list, or the terrain kinds with the current one highlighted.
+    fn open_picker(&mut self, terrain: bool) {
+        if !terrain {
+            let items = presets::PRESETS.iter().map(|(n, t)| format!("{n:<12} {}", presets::description(t))).collect();
+            self.overlay = Some(Overlay::Pick { what: PickKind::Preset, items, selected: 0 });
+            return;
+        }
+        let spec = config::schema::spec("terrain.kind").expect("a key");
+        let Kind::Choice(words) = spec.kind else { return };
+        let current = self.value_text(spec);
+        let selected = words.iter().position(|w| *w == current).unwrap_or(0);
+        let items = words.iter().map(|w| (*w).to_string()).collect();
+        self.overlay = Some(Overlay::Pick { what: PickKind::Terrain, items, selected });
     }
 
     fn jump_group(&mut self, forward: bool) {
@@ -592,7 +618,7 @@ impl App {
     }
 
     /// Puts `params` in force: live on the walk where the model allows, else a restart.
-    fn apply(&mut self, params: WalkParams, what: String, record: bool) {
+    pub(super) fn apply(&mut self, params: WalkParams, what: String, record: bool) {
         let before = std::mem::replace(&mut self.params, params.clone());
         match self.walker.set_params(&params) {
             Ok(true) => {}
@@ -630,22 +656,40 @@ impl App {
         }
     }
 
-    /// Writes the edits into the config file (atomically, comments kept).
+    /// Asks for the edits to be written into the config file (comments kept).
     pub fn save(&mut self) {
+        self.request_save(AfterSave::Stay);
+    }
+
+    pub(super) fn request_save(&mut self, after: AfterSave) {
         let Some(path) = self.path.clone() else { return };
         let keys = self.changed_keys();
-        match save::save(&path, &self.source_text, &self.params, &keys) {
-            Ok(text) => {
+        match save::edited_text(&self.source_text, &self.params, &keys) {
+            Ok(text) => self.effects.push(Effect::Save { path, text, keys: keys.len(), after }),
+            Err(e) => self.saved(path, String::new(), 0, after, Err(e)),
+        }
+    }
+
+    /// A save ended.
+    fn saved(&mut self, path: PathBuf, text: String, keys: usize, after: AfterSave, result: Result<(), String>) {
+        match result {
+            Ok(()) => {
                 self.source_text = text;
                 self.saved = self.params.clone();
-                self.message = Some(format!(
-                    "saved {} ({} key{})",
-                    path.display(),
-                    keys.len(),
-                    if keys.len() == 1 { "" } else { "s" }
-                ));
+                self.message =
+                    Some(format!("saved {} ({} key{})", path.display(), keys, if keys == 1 { "" } else { "s" }));
+                if after == AfterSave::Quit {
+                    self.quit = true;
+                }
             }
-            Err(e) => self.message = Some(format!("not saved: {e}")),
+            Err(e) => {
+                let e = format!("not saved: {e}");
+                if let AfterSave::SaveAs { typed, old_path } = after {
+                    self.path = old_path;
+                    self.overlay = Some(Overlay::SavePath { text: typed, error: Some(e.clone()) });
+                }
+                self.message = Some(e);
+            }
         }
     }
 
@@ -664,22 +708,21 @@ impl App {
         self.export.is_some()
     }
 
-    /// Starts writing a report of the current parameters on a worker thread; the lab stays
+    /// Asks for a report of the current parameters on a worker thread; the lab stays
     /// responsive and shows the stages in the status line.
     fn start_export(&mut self) {
         if self.export.is_some() {
             self.message = Some("a report is already being written".into());
             return;
         }
-        let stem =
+        let name =
             self.path.as_ref().and_then(|p| p.file_stem()).map_or("lab".into(), |s| s.to_string_lossy().into_owned());
-        match Export::start(&self.export_dir.join(&stem), stem, &self.params, &self.source_text) {
-            Ok(export) => {
-                self.export = Some(export);
-                self.message = Some("report: starting".into());
-            }
-            Err(e) => self.message = Some(format!("report not written: {e}")),
-        }
+        self.effects.push(Effect::Export {
+            out: self.export_dir.join(&name),
+            name,
+            params: Box::new(self.params.clone()),
+            source_text: self.source_text.clone(),
+        });
     }
 
     /// Takes what the report thread has said; returns whether anything changed on screen.
@@ -730,106 +773,7 @@ impl App {
         ));
     }
 
-    fn on_overlay_key(&mut self, overlay: Overlay, key: KeyEvent) {
-        match overlay {
-            Overlay::Help => {
-                // Any key closes the help; `q` also quits, as users expect.
-                if key.code == KeyCode::Char('q') {
-                    self.perform(Action::Quit);
-                }
-            }
-            Overlay::ConfirmQuit => match key.code {
-                KeyCode::Char('y' | 'q') => self.quit = true,
-                KeyCode::Char('s') => {
-                    if self.path.is_some() {
-                        self.save();
-                        self.quit = !self.is_modified();
-                    } else {
-                        self.overlay = Some(Overlay::SavePath { text: "my_walk.toml".into(), error: None });
-                    }
-                }
-                _ => {}
-            },
-            Overlay::Typing { mut text, error } => match key.code {
-                KeyCode::Esc => {}
-                KeyCode::Enter => match self.set_typed(&text) {
-                    Ok(()) => {}
-                    Err(e) => self.overlay = Some(Overlay::Typing { text, error: Some(e) }),
-                },
-                KeyCode::Backspace => {
-                    text.pop();
-                    self.overlay = Some(Overlay::Typing { text, error });
-                }
-                KeyCode::Char(c) => {
-                    text.push(c);
-                    self.overlay = Some(Overlay::Typing { text, error });
-                }
-                _ => self.overlay = Some(Overlay::Typing { text, error }),
-            },
-            Overlay::SavePath { mut text, error } => match key.code {
-                KeyCode::Esc => {}
-                KeyCode::Enter => {
-                    let path = PathBuf::from(text.trim());
-                    if text.trim().is_empty() {
-                        self.overlay = Some(Overlay::SavePath { text, error: Some("type a file name".into()) });
-                        return;
-                    }
-                    let old = self.path.replace(path.clone());
-                    // A new file gets every key that differs from the text it is built from.
-                    self.saved = config::load_text(&self.source_text, "source", &[]).unwrap_or_default();
-                    self.save();
-                    if self.is_modified() {
-                        let e = self.message.clone().unwrap_or_default();
-                        self.path = old;
-                        self.overlay = Some(Overlay::SavePath { text, error: Some(e) });
-                    }
-                }
-                KeyCode::Backspace => {
-                    text.pop();
-                    self.overlay = Some(Overlay::SavePath { text, error });
-                }
-                KeyCode::Char(c) => {
-                    text.push(c);
-                    self.overlay = Some(Overlay::SavePath { text, error });
-                }
-                _ => self.overlay = Some(Overlay::SavePath { text, error }),
-            },
-            Overlay::Recovery { found, error } => match key.code {
-                KeyCode::Char('l') => match config::load_text(&found.text, &found.path.display().to_string(), &[]) {
-                    Ok(params) => {
-                        self.apply(params, format!("recovered the unsaved edits of {}", found.age), true);
-                        let _ = std::fs::remove_file(&found.path);
-                    }
-                    Err(e) => {
-                        self.overlay = Some(Overlay::Recovery { found, error: Some(e.to_string()) });
-                    }
-                },
-                KeyCode::Char('d') => {
-                    let _ = std::fs::remove_file(&found.path);
-                    self.message = Some(format!("discarded {}", found.path.display()));
-                }
-                KeyCode::Esc => {
-                    self.message = Some(format!("kept {} for later", found.path.display()));
-                }
-                _ => self.overlay = Some(Overlay::Recovery { found, error }),
-            },
-            Overlay::Pick { what, items, mut selected } => match key.code {
-                KeyCode::Esc => {}
-                KeyCode::Up | KeyCode::Char('k') => {
-                    selected = selected.checked_sub(1).unwrap_or(items.len() - 1);
-                    self.overlay = Some(Overlay::Pick { what, items, selected });
-                }
-                KeyCode::Down | KeyCode::Char('j') => {
-                    selected = (selected + 1) % items.len();
-                    self.overlay = Some(Overlay::Pick { what, items, selected });
-                }
-                KeyCode::Enter => self.pick(what, &items[selected]),
-                _ => self.overlay = Some(Overlay::Pick { what, items, selected }),
-            },
-        }
-    }
-
-    fn pick(&mut self, what: PickKind, item: &str) {
+    pub(super) fn pick(&mut self, what: PickKind, item: &str) {
         let name = item.split_whitespace().next().unwrap_or_default();
         match what {
             PickKind::Preset => match presets::params(name) {

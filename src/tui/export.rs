@@ -16,6 +16,12 @@ pub struct Export {
     rx: Receiver<ExportMsg>,
 }
 
+impl std::fmt::Debug for Export {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Export { .. }")
+    }
+}
+
 /// What the lab shows after a poll.
 pub struct News {
     /// The status line.

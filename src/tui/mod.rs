@@ -6,10 +6,14 @@
 //! it draws nothing and sleeps in `poll`.
 
 pub mod app;
+pub mod effects;
 pub mod export;
 pub mod keys;
+pub mod msg;
+mod overlays;
 pub mod recovery;
 pub mod save;
+pub mod text_input;
 pub mod ui;
 pub mod watch;
 
@@ -196,7 +200,7 @@ fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Res
             loop {
                 match event::read()? {
                     Event::Key(key) if key.kind != KeyEventKind::Release => {
-                        app.on_key(key);
+                        effects::step(app, app::Msg::Key(key));
                         dirty = true;
                     }
                     Event::Resize(..) => {

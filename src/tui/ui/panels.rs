@@ -3,6 +3,7 @@
 use crate::config::schema::{Kind, PARAMS};
 use crate::tui::app::{App, Overlay, PickKind};
 use crate::tui::keys::HELP;
+use crate::tui::text_input::TextInput;
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
 use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Wrap};
@@ -221,6 +222,29 @@ pub fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     f.render_widget(Paragraph::new(Line::from(spans)), area);
 }
 
+/// A text field after `prefix`: the selected pre-filled text reversed, or the cursor as a
+/// reversed character (an underscore at the end).
+fn input_line(prefix: &str, input: &TextInput) -> Line<'static> {
+    let reversed = Style::new().reversed();
+    let mut spans = vec![Span::raw(prefix.to_string())];
+    if input.is_selected() {
+        spans.push(Span::styled(input.text().to_string(), reversed));
+        spans.push(Span::raw("_"));
+        return Line::from(spans);
+    }
+    let (before, after) = input.split_at_cursor();
+    spans.push(Span::raw(before.to_string()));
+    let mut rest = after.chars();
+    match rest.next() {
+        Some(c) => {
+            spans.push(Span::styled(c.to_string(), reversed));
+            spans.push(Span::raw(rest.as_str().to_string()));
+        }
+        None => spans.push(Span::raw("_")),
+    }
+    Line::from(spans)
+}
+
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let w = width.min(area.width);
     let h = height.min(area.height);
@@ -249,7 +273,7 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
         Overlay::Typing { text, error } => {
             let spec = &PARAMS[app.selected];
             let mut lines = vec![
-                Line::raw(format!("{} = {text}_", spec.key)),
+                input_line(&format!("{} = ", spec.key), text),
                 Line::styled(format!("valid: {}", spec.valid_range()), Style::new().fg(Color::DarkGray)),
             ];
             if let Some(e) = error {
@@ -265,7 +289,7 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
             );
         }
         Overlay::SavePath { text, error } => {
-            let mut lines = vec![Line::raw(format!("{text}_"))];
+            let mut lines = vec![input_line("", text)];
             if let Some(e) = error {
                 lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
             }
