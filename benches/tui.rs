@@ -1,7 +1,7 @@
 //! Speed of the lab: one full frame (walk update at 60 fps + drawing every panel into a
 //! 160x48 buffer, as the wide layout does), and the same at 80x24. Figures in
 //! `benches/README.md`; bytes written to a real terminal are measured by
-//! `cargo run --release --example tui_bytes`.
+//! `cargo bench --bench tui_bytes`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use gaitlab::tui::{load_app, ui};

@@ -5,6 +5,10 @@
 //! [`config`] reads and validates TOML into model parameters; [`output`] writes the joint
 //! table; [`analysis`] measures walks; [`report`] writes report folders; [`tui`] is the terminal lab and [`cli`] the command
 //! line, both on top of the rest.
+//!
+//! The model's spec is `docs/gait-model.md` in the repository: "spec §N" in these docs is its
+//! section N. Bracketed numbers like [6.3.2] and "fig 6.12" are sections and figures of the
+//! thesis the spec follows (P. Mohelník, *Procedural animation of human walk*, Brno 2016).
 
 #![warn(missing_docs)]
 

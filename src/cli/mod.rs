@@ -96,9 +96,13 @@ pub enum Command {
     Report {
         /// Config file.
         config: PathBuf,
-        /// Report folder [default: reports/<config stem>]; a previous report there is replaced,
-        /// any other folder is refused
-        #[arg(long)]
+        /// Report folder, by default `reports/<config stem>`; a previous report there is
+        /// replaced, any other folder is refused. (`help` is spelled out because rustdoc would
+        /// read the help's `<config stem>` as an HTML tag.)
+        #[arg(
+            long,
+            help = "Report folder [default: reports/<config stem>]; a previous report there is replaced, any other folder is refused"
+        )]
         out: Option<PathBuf>,
         /// Replace a previous report even if it holds files a report does not write
         #[arg(long)]
@@ -298,8 +302,8 @@ fn report(args: &ReportArgs<'_>) -> Result<()> {
         Ok(list) => list.unwrap_or_default(),
         Err(message) => return Err(Error::Usage(format!("--ik-solvers: {message}"))),
     };
-    // A report records every frame with its full-body pose for its tables and plots (1000
-    // cycles: ~190 MB, 2 s), so the bound keeps it within that (simulate streams any length).
+    // A report records every frame with its full-body pose for its tables and plots, so the
+    // bound keeps its memory and time in check (benches/README.md); simulate streams any length.
     let valid = "3 to 1000 (the first cycle is start-up; for longer walks use `gaitlab simulate`)";
     let cycles = in_range("--cycles", args.cycles.unwrap_or(params.sim.cycles), 3..=1000, valid)?;
     let mut others = Vec::new();

@@ -4,23 +4,23 @@
 //! will be at the *next* mid double support. A candidate position is scored by simulating the
 //! stance that it shapes — from the current stance leg's mid-stance to the double support,
 //! then the landing leg from the double support to its own mid-stance — with the walk's own
-//! phase and IK code ([`Walker::project_stance`], [`Walker::target_of`], [`solve_leg`]), and
+//! phase and IK code ([`Gait::project_stance`], [`Gait::target_of`], [`solve_leg`]), and
 //! summing the weighted squared angular accelerations of hip, knee and ankle. A candidate at
 //! which a stance leg cannot reach is infeasible.
 //!
 //! "Cannot reach" includes rolling over the toes further than the heel-rise curve says. The
 //! walk lets a trailing leg roll on past its curve when the hip runs ahead of it
-//! ([`Walker::target_of`]), so no candidate is ever strictly out of reach in heel rise; but
+//! ([`Gait::target_of`]), so no candidate is ever strictly out of reach in heel rise; but
 //! a leg doing that holds its knee straight at the reach limit, which has no knee
 //! acceleration at all, and the cost alone would drive the pelvis forward into a stiff,
-//! hyper-extended push-off (measured on the default walk: hip extension −37° instead of
-//! −21°, heel rise 30° past its curve). A candidate needing more than
+//! hyper-extended push-off, far past the fixed rule's hip extension and heel rise (figures in
+//! benches/README.md, "Optimiser allowances"). A candidate needing more than
 //! [`HEEL_RISE_SLACK_DEG`](crate::model::params::HEEL_RISE_SLACK_DEG) of extra heel rise beyond what the fixed rule's position needs
 //! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
 //!
 //! Downhill the same push can come without extra heel rise: once the pelvis kept its speed
 //! through its keys, the slope_down walk's optimum moved the pelvis far forward and extended
-//! the trailing hip to 35.7° (normal gait: 10–20°; its fixed rule: 11.8°). A candidate asking
+//! the trailing hip well past normal gait's 10–20° (see benches/README.md). A candidate asking
 //! more than [`HIP_EXTENSION_SLACK_DEG`](crate::model::params::HIP_EXTENSION_SLACK_DEG) of hip extension beyond the fixed rule's is
 //! infeasible too ([`StepProblem::hip_extension_allowance`]).
 
@@ -302,8 +302,8 @@ impl StepProblem {
             // repeated) inside the first level's bracket, placing each point where the last
             // ones say the minimum is instead of on a grid. Where both neighbours of the
             // coarse best are infeasible the feasible band is narrower than the first level's
-            // spacing, and the thesis's grid is what finds its lowest point (measured: a
-            // section search there ended up to 47 % higher), so they take this branch only
+            // spacing, and the thesis's grid is what finds its lowest point (a section search
+            // there ended far higher: benches/README.md), so they take this branch only
             // when the band is known.
             let mut fresh: Vec<f64> = Vec::new();
             for k in 0..m {

@@ -12,8 +12,8 @@ use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
 
 /// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
-/// beyond what the fixed rule's position asks (the default walk's fixed rule asks about
-/// 1.4°); `optimiser.heel_rise_slack_deg`.
+/// beyond what the fixed rule's position asks (what the fixed rule itself asks is in
+/// benches/README.md, "Optimiser allowances"); `optimiser.heel_rise_slack_deg`.
 pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
 
 /// Default hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed

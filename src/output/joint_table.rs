@@ -48,8 +48,8 @@ pub const COLUMNS: &[&str] = &[
 
 /// Appends `x` with `decimals` places (at most 6), rounded half away from zero from the
 /// binary value; a value that rounds to zero is written without a minus sign so −0.0000 and
-/// 0.0000 cannot differ between runs. Integer arithmetic instead of `format!("{:.6}")`, which
-/// costs about a quarter of a microsecond a number and made the CSV the bottleneck.
+/// 0.0000 cannot differ between runs. Integer arithmetic instead of `format!("{:.6}")`, whose
+/// cost per number made the CSV the bottleneck (benches/README.md, "Walk model").
 fn push_fixed(line: &mut String, x: f64, decimals: usize) {
     const POW: [f64; 7] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6];
     let scaled = (x * POW[decimals]).round();

@@ -1,25 +1,41 @@
-//! Median time of one step's pelvis choice (fixed-rule cost + search) by each method, with
-//! the cost reached and evaluations used, over the steps of several configs. Figures for
-//! benches/README.md: `cargo run --release --example opt_hot`.
-use gaitlab::config::presets;
+//! Probe: one step's pelvis choice by each search method (`thesis`, `golden`, `brent`,
+//! `joint`) on the same step problems — 16 consecutive steps after start-up of each of six
+//! configs, every method given the same walker state. Each choice is the fixed rule's cost
+//! (which sets the allowances) plus the search, timed 25 times a step; the table gives the
+//! mean evaluations (the fixed rule's included), the mean cost reached, the cost against the
+//! thesis method's and the median time. It prints the markdown table of benches/README.md,
+//! "Pelvis optimisation".
+//!
+//! ```text
+//! cargo bench --bench opt_hot
+//! ```
+//!
+//! Not run by a plain `cargo bench` (`bench = false` in Cargo.toml).
+
+mod common;
+
 use gaitlab::model::params::SearchMethod;
 use gaitlab::model::walk::Walker;
 use std::time::Instant;
 
+const USAGE: &str = "cargo bench --bench opt_hot";
+
 fn main() {
+    common::args(USAGE, 0);
     println!("| config | method | evaluations (mean) | cost (mean over steps) | vs thesis | median µs |");
     println!("|---|---|---|---|---|---|");
     for name in ["default", "stairs_up", "stairs_down", "slope_up", "slope_down", "rough"] {
-        let p = presets::params(name).unwrap().unwrap();
-        let mut w = Walker::new(&p).unwrap();
+        let p = common::preset(USAGE, name);
+        let mut w = Walker::new(&p).expect("a preset walks");
         let mut problems = Vec::new();
         let mut seen = 0;
         while problems.len() < 16 {
             w.advance(1.0 / 60.0);
             if w.step_plans().len() > seen {
                 seen = w.step_plans().len();
+                // The first two steps are start-up.
                 if seen > 2 {
-                    problems.push((w.clone(), w.last_step_problem().unwrap().clone()));
+                    problems.push((w.clone(), w.last_step_problem().expect("a step was just planned").clone()));
                 }
             }
         }
