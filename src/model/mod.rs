@@ -6,7 +6,9 @@
 //! - [`body`]: skeleton, segment lengths, poses;
 //! - [`ik`]: the analytic two-bone solver;
 //! - [`params`]: typed parameters and how the high-level knobs derive the rest;
-//! - [`walk`]: phases, footfalls, swing planning, pelvis, upper body, frames.
+//! - [`walk`]: phases, footfalls, swing planning, pelvis, upper body, frames;
+//! - [`optimise`]: the pelvis-position search at double support;
+//! - [`variants`]: enum variant tables for the name tables strum derives.
 
 pub mod body;
 pub mod curve;
@@ -15,4 +17,5 @@ pub mod ik;
 pub mod optimise;
 pub mod params;
 pub mod terrain;
+pub mod variants;
 pub mod walk;

@@ -196,7 +196,10 @@ impl IkParams {
 }
 
 /// How the pelvis position at double support is searched for (spec §8).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, strum::IntoStaticStr, strum::EnumString, strum::VariantArray, strum::EnumCount,
+)]
+#[strum(serialize_all = "snake_case")]
 pub enum SearchMethod {
     /// The thesis's two levels: evenly spaced candidates, then a finer set around the best.
     Thesis,
@@ -214,24 +217,19 @@ pub enum SearchMethod {
 
 impl SearchMethod {
     /// Every method, in the order the config documents them.
-    pub const ALL: [SearchMethod; 4] =
-        [SearchMethod::Thesis, SearchMethod::Golden, SearchMethod::Brent, SearchMethod::Joint];
+    pub const ALL: [SearchMethod; <SearchMethod as strum::EnumCount>::COUNT] =
+        crate::model::variants::array(<SearchMethod as strum::VariantArray>::VARIANTS);
 
     /// The config's name for it (`thesis`, `golden`, `brent`, `joint`).
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            SearchMethod::Thesis => "thesis",
-            SearchMethod::Golden => "golden",
-            SearchMethod::Brent => "brent",
-            SearchMethod::Joint => "joint",
-        }
+        self.into()
     }
 
     /// The method called `name` in a config.
     #[must_use]
     pub fn from_name(name: &str) -> Option<SearchMethod> {
-        SearchMethod::ALL.into_iter().find(|m| m.name() == name)
+        name.parse().ok()
     }
 }
 

@@ -3,7 +3,10 @@
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 /// Everything a key can ask of the lab.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, strum::IntoStaticStr, strum::EnumString, strum::VariantArray, strum::EnumCount,
+)]
+#[strum(serialize_all = "snake_case")]
 pub enum Action {
     /// Quit (asks first when there are unsaved edits).
     Quit,
@@ -66,6 +69,7 @@ pub enum Action {
     /// Next optimiser method.
     NextMethod,
     /// Next leg IK solver.
+    #[strum(serialize = "next_ik_solver")]
     NextSolver,
     /// Write a report of the current parameters (in the background).
     Export,
@@ -73,78 +77,13 @@ pub enum Action {
 
 impl Action {
     /// Every action, in the order of its `[keys]` name table.
-    pub const ALL: [Action; 32] = [
-        Action::Quit,
-        Action::Help,
-        Action::Pause,
-        Action::Step,
-        Action::Slower,
-        Action::Faster,
-        Action::Restart,
-        Action::Up,
-        Action::Down,
-        Action::GroupUp,
-        Action::GroupDown,
-        Action::Decrease,
-        Action::Increase,
-        Action::DecreaseCoarse,
-        Action::IncreaseCoarse,
-        Action::Edit,
-        Action::Reset,
-        Action::Undo,
-        Action::Redo,
-        Action::Save,
-        Action::SaveAs,
-        Action::Presets,
-        Action::Terrain,
-        Action::ToggleView,
-        Action::NextCurve,
-        Action::PrevCurve,
-        Action::ToggleGrid,
-        Action::NextPanel,
-        Action::RerunOptimiser,
-        Action::NextMethod,
-        Action::NextSolver,
-        Action::Export,
-    ];
+    pub const ALL: [Action; <Action as strum::EnumCount>::COUNT] =
+        crate::model::variants::array(<Action as strum::VariantArray>::VARIANTS);
 
     /// Its name in a config's `[keys]` table.
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            Action::Quit => "quit",
-            Action::Help => "help",
-            Action::Pause => "pause",
-            Action::Step => "step",
-            Action::Slower => "slower",
-            Action::Faster => "faster",
-            Action::Restart => "restart",
-            Action::Up => "up",
-            Action::Down => "down",
-            Action::GroupUp => "group_up",
-            Action::GroupDown => "group_down",
-            Action::Decrease => "decrease",
-            Action::Increase => "increase",
-            Action::DecreaseCoarse => "decrease_coarse",
-            Action::IncreaseCoarse => "increase_coarse",
-            Action::Edit => "edit",
-            Action::Reset => "reset",
-            Action::Undo => "undo",
-            Action::Redo => "redo",
-            Action::Save => "save",
-            Action::SaveAs => "save_as",
-            Action::Presets => "presets",
-            Action::Terrain => "terrain",
-            Action::ToggleView => "toggle_view",
-            Action::NextCurve => "next_curve",
-            Action::PrevCurve => "prev_curve",
-            Action::ToggleGrid => "toggle_grid",
-            Action::NextPanel => "next_panel",
-            Action::RerunOptimiser => "rerun_optimiser",
-            Action::NextMethod => "next_method",
-            Action::NextSolver => "next_ik_solver",
-            Action::Export => "export",
-        }
+        self.into()
     }
 }
 
@@ -338,7 +277,7 @@ impl KeyMap {
         };
         for (name, item) in table.iter() {
             let at = place(item.span().or_else(|| table.key(name).and_then(|k| k.span())));
-            let Some(action) = Action::ALL.into_iter().find(|a| a.name() == name) else {
+            let Some(action) = name.parse::<Action>().ok() else {
                 let hint = crate::config::schema::did_you_mean(name, Action::ALL.iter().map(|a| a.name()))
                     .map_or(String::new(), |n| format!("did you mean `{n}`? "));
                 let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
@@ -382,5 +321,24 @@ impl KeyMap {
     #[must_use]
     pub fn help_keys(&self, actions: &[Action]) -> String {
         actions.iter().map(|a| self.keys_of(*a)).collect::<Vec<_>>().join(" / ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn action_names_are_the_documented_ones_and_parse_back() {
+        // The README's `[keys]` action list: the names users' configs are written in.
+        let documented = "quit help pause step slower faster restart up down group_up group_down decrease increase \
+            decrease_coarse increase_coarse edit reset undo redo save save_as presets terrain toggle_view next_curve \
+            prev_curve toggle_grid next_panel rerun_optimiser next_method next_ik_solver export";
+        let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
+        assert_eq!(names, documented.split_whitespace().collect::<Vec<_>>());
+        for a in Action::ALL {
+            assert_eq!(a.name().parse::<Action>(), Ok(a));
+        }
+        assert!("next_solver".parse::<Action>().is_err(), "only the documented name");
     }
 }

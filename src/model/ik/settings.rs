@@ -4,7 +4,19 @@ use crate::model::ik::chain::{JointLimits, LegAngles};
 use glam::DVec3;
 
 /// Which solver places the legs (`[ik] solver`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    PartialEq,
+    Eq,
+    Hash,
+    strum::IntoStaticStr,
+    strum::EnumString,
+    strum::VariantArray,
+    strum::EnumCount,
+)]
+#[strum(serialize_all = "snake_case")]
 pub enum IkSolverKind {
     /// Law of cosines plus the reference-vector swivel: exact, the reference.
     Analytic,
@@ -20,30 +32,19 @@ pub enum IkSolverKind {
 
 impl IkSolverKind {
     /// Every solver, in the order the config documents them.
-    pub const ALL: [IkSolverKind; 5] = [
-        IkSolverKind::Analytic,
-        IkSolverKind::Ccd,
-        IkSolverKind::Fabrik,
-        IkSolverKind::JacobianDls,
-        IkSolverKind::Gradient,
-    ];
+    pub const ALL: [IkSolverKind; <IkSolverKind as strum::EnumCount>::COUNT] =
+        crate::model::variants::array(<IkSolverKind as strum::VariantArray>::VARIANTS);
 
     /// The config's name for it.
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            IkSolverKind::Analytic => "analytic",
-            IkSolverKind::Ccd => "ccd",
-            IkSolverKind::Fabrik => "fabrik",
-            IkSolverKind::JacobianDls => "jacobian_dls",
-            IkSolverKind::Gradient => "gradient",
-        }
+        self.into()
     }
 
     /// The solver called `name` in a config.
     #[must_use]
     pub fn from_name(name: &str) -> Option<IkSolverKind> {
-        IkSolverKind::ALL.into_iter().find(|k| k.name() == name)
+        name.parse().ok()
     }
 
     /// Whether it iterates (and so warm-starts and counts iterations).
@@ -54,7 +55,19 @@ impl IkSolverKind {
 }
 
 /// How the Jacobian solver turns the error into a joint update.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    PartialEq,
+    Eq,
+    Hash,
+    strum::IntoStaticStr,
+    strum::EnumString,
+    strum::VariantArray,
+    strum::EnumCount,
+)]
+#[strum(serialize_all = "snake_case")]
 pub enum JacobianVariant {
     /// Δθ = Jᵀ(JJᵀ + λ²I)⁻¹e: stable through the straight-knee singularity.
     Dls,
@@ -66,23 +79,19 @@ pub enum JacobianVariant {
 
 impl JacobianVariant {
     /// Every variant, in config order.
-    pub const ALL: [JacobianVariant; 3] =
-        [JacobianVariant::Dls, JacobianVariant::Transpose, JacobianVariant::PseudoInverse];
+    pub const ALL: [JacobianVariant; <JacobianVariant as strum::EnumCount>::COUNT] =
+        crate::model::variants::array(<JacobianVariant as strum::VariantArray>::VARIANTS);
 
     /// The config's name for it.
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            JacobianVariant::Dls => "dls",
-            JacobianVariant::Transpose => "transpose",
-            JacobianVariant::PseudoInverse => "pseudo_inverse",
-        }
+        self.into()
     }
 
     /// The variant called `name` in a config.
     #[must_use]
     pub fn from_name(name: &str) -> Option<JacobianVariant> {
-        JacobianVariant::ALL.into_iter().find(|k| k.name() == name)
+        name.parse().ok()
     }
 }
 
