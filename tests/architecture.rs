@@ -26,9 +26,6 @@ const LONG_FNS: &[(&str, &str, usize)] = &[
     ("report/mod.rs", "summary_md", 85),
     ("report/plots.rs", "stick_figure", 117),
     ("report/plots.rs", "optimisation", 145),
-    ("tui/ui/panels.rs", "draw_optimiser", 98),
-    ("tui/ui/panels.rs", "draw_overlay", 92),
-    ("tui/ui/walk.rs", "draw_canvas", 83),
 ];
 
 /// Import circles still there (each as its files in order); none today.

@@ -99,9 +99,16 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let o = &app.params.optimiser;
     let method = if o.enabled { o.method.name() } else { "off" };
     let inner = super::panel(f, area, Line::raw(format!(" Optimiser: {method} (o: re-run, m: method) ")), None);
-    let plans = app.walker.step_plans();
     let [table_area, chart_area] =
         Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(inner);
+    draw_step_table(f, table_area, app);
+    draw_landscape(f, chart_area, app, marker);
+}
+
+/// The optimiser's last steps (a re-run on top): side, ratio, cost against the fixed rule's,
+/// feasible candidates, search time.
+fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
+    let plans = app.walker.step_plans();
     let rows_fit = usize::from(table_area.height.saturating_sub(1));
     let records: Vec<&crate::model::optimise::StepRecord> =
         app.rerun.iter().chain(plans.iter().rev().map(|p| &p.optimisation)).take(rows_fit).collect();
@@ -146,6 +153,11 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         ];
         row_at(buf, table_area.y + 1 + i as u16, &cells, style);
     }
+}
+
+/// The last step's cost across its search range, the chosen position marked.
+fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
+    let plans = app.walker.step_plans();
     let Some((step, landscape)) = &app.landscape else {
         f.render_widget(Paragraph::new("no step planned yet"), chart_area);
         return;
@@ -254,6 +266,8 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 /// Whatever overlay is open.
 pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
     let Some(overlay) = &app.overlay else { return };
+    let error_line =
+        |error: &Option<String>| error.as_ref().map(|e| Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
     match overlay {
         Overlay::Help => {
             let lines: Vec<Line> = HELP
@@ -266,9 +280,8 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
                     ])
                 })
                 .collect();
-            let r = centered(area, 76, lines.len() as u16 + 2);
-            f.render_widget(Clear, r);
-            f.render_widget(Paragraph::new(lines).block(Block::bordered().title(" Keys (any key closes) ")), r);
+            let height = lines.len() as u16 + 2;
+            dialog(f, centered(area, 76, height), " Keys (any key closes) ", lines, false);
         }
         Overlay::Typing { text, error } => {
             let spec = &PARAMS[app.selected];
@@ -276,43 +289,20 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
                 input_line(&format!("{} = ", spec.key), text),
                 Line::styled(format!("valid: {}", spec.valid_range()), Style::new().fg(Color::DarkGray)),
             ];
-            if let Some(e) = error {
-                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
-            }
-            let r = centered(area, 76, 6);
-            f.render_widget(Clear, r);
-            f.render_widget(
-                Paragraph::new(lines)
-                    .wrap(Wrap { trim: true })
-                    .block(Block::bordered().title(" Type a value (enter: set, esc: cancel) ")),
-                r,
-            );
+            lines.extend(error_line(error));
+            dialog(f, centered(area, 76, 6), " Type a value (enter: set, esc: cancel) ", lines, true);
         }
         Overlay::SavePath { text, error } => {
             let mut lines = vec![input_line("", text)];
-            if let Some(e) = error {
-                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
-            }
-            let r = centered(area, 70, 5);
-            f.render_widget(Clear, r);
-            f.render_widget(
-                Paragraph::new(lines)
-                    .wrap(Wrap { trim: true })
-                    .block(Block::bordered().title(" Save as (enter: save, esc: cancel) ")),
-                r,
-            );
+            lines.extend(error_line(error));
+            dialog(f, centered(area, 70, 5), " Save as (enter: save, esc: cancel) ", lines, true);
         }
         Overlay::ConfirmQuit => {
-            let r = centered(area, 52, 5);
-            f.render_widget(Clear, r);
-            f.render_widget(
-                Paragraph::new(vec![
-                    Line::raw(format!("{} edited key(s) are not saved.", app.changed_keys().len())),
-                    Line::styled("s: save and quit   y: quit anyway   esc: stay", Style::new().fg(Color::Yellow)),
-                ])
-                .block(Block::bordered().title(" Quit? ")),
-                r,
-            );
+            let lines = vec![
+                Line::raw(format!("{} edited key(s) are not saved.", app.changed_keys().len())),
+                Line::styled("s: save and quit   y: quit anyway   esc: stay", Style::new().fg(Color::Yellow)),
+            ];
+            dialog(f, centered(area, 52, 5), " Quit? ", lines, false);
         }
         Overlay::Recovery { found, error } => {
             let mut lines = vec![
@@ -320,15 +310,9 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
                 Line::raw(format!("kept in {}.", found.path.display())),
                 Line::styled("l: load them   d: discard them   esc: decide later", Style::new().fg(Color::Yellow)),
             ];
-            if let Some(e) = error {
-                lines.push(Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
-            }
-            let r = centered(area, 76, lines.len() as u16 + 4);
-            f.render_widget(Clear, r);
-            f.render_widget(
-                Paragraph::new(lines).wrap(Wrap { trim: true }).block(Block::bordered().title(" Unsaved edits found ")),
-                r,
-            );
+            lines.extend(error_line(error));
+            let height = lines.len() as u16 + 4;
+            dialog(f, centered(area, 76, height), " Unsaved edits found ", lines, true);
         }
         Overlay::Pick { what, items, selected } => {
             let title = match what {
@@ -343,4 +327,12 @@ pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
             f.render_stateful_widget(list.block(Block::bordered().title(title)), r, &mut state);
         }
     }
+}
+
+/// A bordered box of `lines` over whatever is under `r`, wrapped at its width or not.
+fn dialog(f: &mut Frame, r: Rect, title: &str, lines: Vec<Line<'_>>, wrap: bool) {
+    f.render_widget(Clear, r);
+    let paragraph = Paragraph::new(lines);
+    let paragraph = if wrap { paragraph.wrap(Wrap { trim: true }) } else { paragraph };
+    f.render_widget(paragraph.block(Block::bordered().title(title)), r);
 }

@@ -1,6 +1,7 @@
 //! The stick figure over the terrain, side or frontal view, with the camera on the walker.
 
 use crate::model::body::{Bone, Side};
+use crate::model::terrain::Terrain;
 use crate::tui::app::{App, View};
 use glam::DVec3;
 use ratatui::prelude::*;
@@ -79,6 +80,30 @@ fn legend() -> Line<'static> {
     ])
 }
 
+/// The ground under the figure: the terrain profile with the footfalls in view (side), or
+/// the ground line (front).
+fn draw_ground(ctx: &mut Context, view: View, x_bounds: [f64; 2], terrain: &Terrain, ground: f64, footfalls: &[DVec3]) {
+    match view {
+        View::Side => {
+            let n = 120;
+            let mut prev: Option<(f64, f64)> = None;
+            for i in 0..=n {
+                let x = x_bounds[0] + (x_bounds[1] - x_bounds[0]) * f64::from(i) / f64::from(n);
+                let y = terrain.height(x);
+                if let Some((px, py)) = prev {
+                    ctx.draw(&CLine { x1: px, y1: py, x2: x, y2: y, color: Color::Green });
+                }
+                prev = Some((x, y));
+            }
+            let marks: Vec<(f64, f64)> = footfalls.iter().map(|h| (h.x, h.y)).collect();
+            ctx.draw(&Points { coords: &marks, color: Color::Yellow });
+        }
+        View::Front => {
+            ctx.draw(&CLine { x1: x_bounds[0], y1: ground, x2: x_bounds[1], y2: ground, color: Color::Green });
+        }
+    }
+}
+
 fn draw_canvas(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     if area.width < 2 || area.height < 2 {
         return;
@@ -108,26 +133,7 @@ fn draw_canvas(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         app.walker.footfalls().iter().rev().take_while(|f| f.heel.x >= x_bounds[0] - 1.0).map(|f| f.heel).collect();
     let legs = app.frame.legs;
     let canvas = Canvas::default().marker(marker).x_bounds(x_bounds).y_bounds([y0, y0 + height_m]).paint(move |ctx| {
-        // Terrain.
-        match view {
-            View::Side => {
-                let n = 120;
-                let mut prev: Option<(f64, f64)> = None;
-                for i in 0..=n {
-                    let x = x_bounds[0] + (x_bounds[1] - x_bounds[0]) * f64::from(i) / f64::from(n);
-                    let y = terrain.height(x);
-                    if let Some((px, py)) = prev {
-                        ctx.draw(&CLine { x1: px, y1: py, x2: x, y2: y, color: Color::Green });
-                    }
-                    prev = Some((x, y));
-                }
-                let marks: Vec<(f64, f64)> = footfalls.iter().map(|h| (h.x, h.y)).collect();
-                ctx.draw(&Points { coords: &marks, color: Color::Yellow });
-            }
-            View::Front => {
-                ctx.draw(&CLine { x1: x_bounds[0], y1: ground, x2: x_bounds[1], y2: ground, color: Color::Green });
-            }
-        }
+        draw_ground(ctx, view, x_bounds, terrain, ground, &footfalls);
         ctx.layer();
         let seg = |ctx: &mut Context, a: DVec3, b: DVec3, color: Color| {
             let (x1, y1) = project(a);
