@@ -16,7 +16,7 @@ const MAX_FILE_LINES: usize = 600;
 const MAX_FN_LINES: usize = 80;
 
 /// Files over [`MAX_FILE_LINES`] today, with their line count (issue 11 splits them).
-const LONG_FILES: &[(&str, usize)] = &[("model/walk/mod.rs", 1055), ("report/plots.rs", 769), ("tui/app.rs", 794)];
+const LONG_FILES: &[(&str, usize)] = &[("model/walk/mod.rs", 1055), ("report/plots.rs", 769)];
 
 /// Functions over [`MAX_FN_LINES`] today (file, function), with their line count.
 const LONG_FNS: &[(&str, &str, usize)] = &[

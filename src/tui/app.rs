@@ -6,9 +6,9 @@ use super::keys::{Action, KeyMap};
 pub use super::msg::{AfterSave, Effect, Msg};
 use super::save;
 use super::text_input::TextInput;
-use crate::config::render::{derived_value, toml_number};
-use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
-use crate::config::{self, Loader, presets};
+pub use super::views::{CurveView, Panel, PickKind, View};
+use crate::config::schema::{Kind, PARAMS, Value};
+use crate::config::{self, presets};
 use crate::model::ik::IkSolverKind;
 use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
@@ -23,44 +23,6 @@ const SPEEDS: [f64; 6] = [0.125, 0.25, 0.5, 1.0, 2.0, 4.0];
 
 /// Joint-angle samples kept for the traces: three cycles at 60 samples a second is plenty.
 const TRACE_LEN: usize = 240;
-
-/// The walk as seen from the side or from the front.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum View {
-    /// Sagittal plane: x forward to the right, y up.
-    Side,
-    /// Frontal plane: z (right) to the left, as when facing the walker; y up.
-    Front,
-}
-
-/// The panel shown beside the walk on narrow screens.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Panel {
-    /// The parameter editor.
-    Editor,
-    /// Curve charts.
-    Curves,
-    /// Joint angle traces.
-    Joints,
-    /// The optimiser's choices and landscape.
-    Optimiser,
-}
-
-impl Panel {
-    /// Every panel, in tab order.
-    pub const ALL: [Panel; 4] = [Panel::Editor, Panel::Curves, Panel::Joints, Panel::Optimiser];
-
-    /// Its tab title.
-    #[must_use]
-    pub fn title(self) -> &'static str {
-        match self {
-            Panel::Editor => "Parameters",
-            Panel::Curves => "Curves",
-            Panel::Joints => "Joints",
-            Panel::Optimiser => "Optimiser",
-        }
-    }
-}
 
 /// A modal question or list on top of the screen.
 #[derive(Clone, Debug, PartialEq)]
@@ -101,83 +63,12 @@ pub enum Overlay {
     },
 }
 
-/// What a pick list chooses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PickKind {
-    /// A preset, whose parameters replace the current ones (one undoable edit).
-    Preset,
-    /// `terrain.kind`.
-    Terrain,
-}
-
 /// One undoable edit: the whole parameter set before and after, and what changed.
 #[derive(Clone, Debug)]
-struct Edit {
-    before: WalkParams,
-    after: WalkParams,
-    what: String,
-}
-
-/// A curve chart's choice.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CurveView {
-    /// Pelvic rotation (deg) over the right leg's cycle.
-    PelvisRotation,
-    /// Pelvic obliquity (deg).
-    PelvisObliquity,
-    /// Pelvic tilt (deg).
-    PelvisTilt,
-    /// Pelvis height's shape between keys.
-    PelvisVertical,
-    /// Lateral pelvis position (cm).
-    PelvisLateral,
-    /// Forward progress between keys, both halves.
-    PelvisForward,
-    /// The swinging foot's forward progress.
-    SwingForward,
-    /// The swinging foot's lateral weight.
-    SwingLateral,
-    /// Heel height of the swinging foot (cm): the design and the step's adapted curve.
-    SwingHeelHeight,
-    /// Foot pitch through the swing (deg): design and adapted.
-    Ankle,
-    /// Heel rise (foot–ground angle, deg).
-    HeelRise,
-}
-
-impl CurveView {
-    /// Every chart, in `c` order.
-    pub const ALL: [CurveView; 11] = [
-        CurveView::PelvisRotation,
-        CurveView::PelvisObliquity,
-        CurveView::PelvisTilt,
-        CurveView::PelvisVertical,
-        CurveView::PelvisLateral,
-        CurveView::PelvisForward,
-        CurveView::SwingForward,
-        CurveView::SwingLateral,
-        CurveView::SwingHeelHeight,
-        CurveView::Ankle,
-        CurveView::HeelRise,
-    ];
-
-    /// Chart title with its unit.
-    #[must_use]
-    pub fn title(self) -> &'static str {
-        match self {
-            CurveView::PelvisRotation => "pelvic rotation (deg)",
-            CurveView::PelvisObliquity => "pelvic obliquity (deg)",
-            CurveView::PelvisTilt => "pelvic tilt (deg)",
-            CurveView::PelvisVertical => "pelvis vertical shape (0-1)",
-            CurveView::PelvisLateral => "pelvis lateral (cm)",
-            CurveView::PelvisForward => "pelvis forward ds>ms, ms>ds (0-1)",
-            CurveView::SwingForward => "swing foot forward (0-1)",
-            CurveView::SwingLateral => "swing foot lateral (0-1)",
-            CurveView::SwingHeelHeight => "swing heel height (cm)",
-            CurveView::Ankle => "swing foot pitch (deg)",
-            CurveView::HeelRise => "heel rise (deg)",
-        }
-    }
+pub(super) struct Edit {
+    pub(super) before: WalkParams,
+    pub(super) after: WalkParams,
+    pub(super) what: String,
 }
 
 /// The lab.
@@ -195,12 +86,12 @@ pub struct App {
     pub walker: Walker,
     /// The latest frame of the walk.
     pub frame: Frame,
-    frame_count: u64,
+    pub(super) frame_count: u64,
     /// Joint angles of recent frames: time (s), then hip, knee, ankle right, then left (deg).
     pub traces: VecDeque<(f64, [f64; 6])>,
     /// Paused.
     pub paused: bool,
-    speed_index: usize,
+    pub(super) speed_index: usize,
     /// Side or frontal view.
     pub view: View,
     /// Curve chart shown (single mode) or first in the grid.
@@ -215,8 +106,8 @@ pub struct App {
     pub overlay: Option<Overlay>,
     /// A line for the status bar.
     pub message: Option<String>,
-    undo: Vec<Edit>,
-    redo: Vec<Edit>,
+    pub(super) undo: Vec<Edit>,
+    pub(super) redo: Vec<Edit>,
     /// Quit requested and granted.
     pub quit: bool,
     /// Cost landscape of the last step: its step number and samples.
@@ -499,161 +390,6 @@ impl App {
         let selected = words.iter().position(|w| *w == current).unwrap_or(0);
         let items = words.iter().map(|w| (*w).to_string()).collect();
         self.overlay = Some(Overlay::Pick { what: PickKind::Terrain, items, selected });
-    }
-
-    fn jump_group(&mut self, forward: bool) {
-        let group = PARAMS[self.selected].group();
-        let starts: Vec<usize> =
-            (0..PARAMS.len()).filter(|&i| i == 0 || PARAMS[i].group() != PARAMS[i - 1].group()).collect();
-        let here = starts.iter().rposition(|&s| PARAMS[s].group() == group).unwrap_or(0);
-        let to = if forward { (here + 1) % starts.len() } else { (here + starts.len() - 1) % starts.len() };
-        self.selected = starts[to];
-    }
-
-    /// The value of `spec` as the editor shows it (derived keys: their derived value).
-    #[must_use]
-    pub fn value_text(&self, spec: &ParamSpec) -> String {
-        match (spec.get)(&self.params) {
-            Value::Real(x) => toml_number(x),
-            Value::Auto => {
-                derived_value(spec.key, &self.params, self.walker.resolved()).map_or("auto".into(), toml_number)
-            }
-            Value::Int(n) => n.to_string(),
-            Value::Word(w) => w.to_string(),
-            Value::Bool(b) => b.to_string(),
-        }
-    }
-
-    /// Fine step of a numeric key: about 1/200 of its range, rounded to 1, 2 or 5 × 10^k.
-    #[must_use]
-    pub fn fine_step(spec: &ParamSpec) -> f64 {
-        match spec.kind {
-            Kind::Real { min, max, .. } => {
-                let raw = (max - min) / 200.0;
-                let decade = 10f64.powf(raw.log10().floor());
-                let m = raw / decade;
-                decade
-                    * if m < 1.5 {
-                        1.0
-                    } else if m < 3.5 {
-                        2.0
-                    } else if m < 7.5 {
-                        5.0
-                    } else {
-                        10.0
-                    }
-            }
-            _ => 1.0,
-        }
-    }
-
-    fn step_selected(&mut self, steps: f64) {
-        let spec = &PARAMS[self.selected];
-        let current = (spec.get)(&self.params);
-        let new = match (spec.kind, current) {
-            (Kind::Real { min, max, .. }, v) => {
-                let now = match v {
-                    Value::Real(x) => x,
-                    _ => derived_value(spec.key, &self.params, self.walker.resolved()).unwrap_or(min),
-                };
-                let step = App::fine_step(spec);
-                // Land on the step grid, so that repeated presses give round numbers.
-                let x = ((now / step).round() + steps.signum() * steps.abs().max(1.0)) * step;
-                let x = ((x.clamp(min, max)) * 1e9).round() / 1e9;
-                Value::Real(x)
-            }
-            (Kind::Int { min, max }, Value::Int(n)) => Value::Int((n + steps as i64).clamp(min, max)),
-            (Kind::Choice(words), Value::Word(w)) => {
-                let i = words.iter().position(|x| *x == w).unwrap_or(0) as i64;
-                let n = words.len() as i64;
-                Value::Word(words[(i + steps.signum() as i64).rem_euclid(n) as usize])
-            }
-            (Kind::Bool, Value::Bool(b)) => Value::Bool(!b),
-            _ => return,
-        };
-        self.set_value(spec, &new);
-    }
-
-    /// Sets a key to a value already valid for its kind, through the config's cross-checks.
-    fn set_value(&mut self, spec: &ParamSpec, value: &Value) {
-        if (spec.get)(&self.params) == *value {
-            return;
-        }
-        let mut params = self.params.clone();
-        (spec.set)(&mut params, value);
-        let problems = config::cross_check(&params);
-        if let Some((_, message)) = problems.first() {
-            self.message = Some(format!("{}: {message}", spec.key));
-            return;
-        }
-        let what = format!("{} = {}", spec.key, crate::config::render::value_text(value).unwrap_or("(derived)".into()));
-        self.apply(params, what, true);
-    }
-
-    /// Sets the selected key from typed text, validated like the config file and `--set`.
-    /// Returns the error to show, if refused.
-    pub fn set_typed(&mut self, text: &str) -> Result<(), String> {
-        let spec = &PARAMS[self.selected];
-        let text = text.trim();
-        if text.is_empty() || text == "auto" {
-            if matches!(spec.kind, Kind::Real { auto: true, .. }) {
-                self.set_value(spec, &Value::Auto);
-                return Ok(());
-            }
-            return Err(format!("{}: expected {}", spec.key, spec.valid_range()));
-        }
-        let mut loader = Loader::from_params(self.params.clone());
-        loader.apply_set(&format!("{}={text}", spec.key), 1);
-        match loader.finish() {
-            Ok(params) => {
-                if params != self.params {
-                    self.apply(params, format!("{} = {text}", spec.key), true);
-                }
-                Ok(())
-            }
-            Err(errors) => {
-                Err(errors.0.iter().map(|e| format!("{}: {}", e.key, e.message)).collect::<Vec<_>>().join("; "))
-            }
-        }
-    }
-
-    /// Puts `params` in force: live on the walk where the model allows, else a restart.
-    pub(super) fn apply(&mut self, params: WalkParams, what: String, record: bool) {
-        let before = std::mem::replace(&mut self.params, params.clone());
-        match self.walker.set_params(&params) {
-            Ok(true) => {}
-            Ok(false) => self.restart(),
-            Err(e) => {
-                self.params = before;
-                self.message = Some(format!("refused: {e}"));
-                return;
-            }
-        }
-        if record {
-            self.undo.push(Edit { before, after: params, what: what.clone() });
-            self.redo.clear();
-        }
-        self.message = Some(what);
-    }
-
-    fn undo(&mut self) {
-        match self.undo.pop() {
-            Some(edit) => {
-                self.apply(edit.before.clone(), format!("undone: {}", edit.what), false);
-                self.redo.push(edit);
-            }
-            None => self.message = Some("nothing to undo".into()),
-        }
-    }
-
-    fn redo(&mut self) {
-        match self.redo.pop() {
-            Some(edit) => {
-                self.apply(edit.after.clone(), format!("redone: {}", edit.what), false);
-                self.undo.push(edit);
-            }
-            None => self.message = Some("nothing to redo".into()),
-        }
     }
 
     /// Asks for the edits to be written into the config file (comments kept).

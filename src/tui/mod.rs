@@ -6,6 +6,7 @@
 //! it draws nothing and sleeps in `poll`.
 
 pub mod app;
+mod editing;
 pub mod effects;
 pub mod export;
 pub mod keys;
@@ -15,6 +16,7 @@ pub mod recovery;
 pub mod save;
 pub mod text_input;
 pub mod ui;
+pub mod views;
 pub mod watch;
 
 use crate::config::{self, presets};

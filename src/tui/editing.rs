@@ -1,0 +1,165 @@
+//! Editing parameters in the lab: the selected key stepped, typed, reset; each change an
+//! undoable edit applied live to the walk where the model allows, else by a restart.
+
+use super::app::{App, Edit};
+use crate::config::render::{derived_value, toml_number};
+use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
+use crate::config::{self, Loader};
+use crate::model::params::WalkParams;
+
+impl App {
+    pub(super) fn jump_group(&mut self, forward: bool) {
+        let group = PARAMS[self.selected].group();
+        let starts: Vec<usize> =
+            (0..PARAMS.len()).filter(|&i| i == 0 || PARAMS[i].group() != PARAMS[i - 1].group()).collect();
+        let here = starts.iter().rposition(|&s| PARAMS[s].group() == group).unwrap_or(0);
+        let to = if forward { (here + 1) % starts.len() } else { (here + starts.len() - 1) % starts.len() };
+        self.selected = starts[to];
+    }
+
+    /// The value of `spec` as the editor shows it (derived keys: their derived value).
+    #[must_use]
+    pub fn value_text(&self, spec: &ParamSpec) -> String {
+        match (spec.get)(&self.params) {
+            Value::Real(x) => toml_number(x),
+            Value::Auto => {
+                derived_value(spec.key, &self.params, self.walker.resolved()).map_or("auto".into(), toml_number)
+            }
+            Value::Int(n) => n.to_string(),
+            Value::Word(w) => w.to_string(),
+            Value::Bool(b) => b.to_string(),
+        }
+    }
+
+    /// Fine step of a numeric key: about 1/200 of its range, rounded to 1, 2 or 5 × 10^k.
+    #[must_use]
+    pub fn fine_step(spec: &ParamSpec) -> f64 {
+        match spec.kind {
+            Kind::Real { min, max, .. } => {
+                let raw = (max - min) / 200.0;
+                let decade = 10f64.powf(raw.log10().floor());
+                let m = raw / decade;
+                decade
+                    * if m < 1.5 {
+                        1.0
+                    } else if m < 3.5 {
+                        2.0
+                    } else if m < 7.5 {
+                        5.0
+                    } else {
+                        10.0
+                    }
+            }
+            _ => 1.0,
+        }
+    }
+
+    pub(super) fn step_selected(&mut self, steps: f64) {
+        let spec = &PARAMS[self.selected];
+        let current = (spec.get)(&self.params);
+        let new = match (spec.kind, current) {
+            (Kind::Real { min, max, .. }, v) => {
+                let now = match v {
+                    Value::Real(x) => x,
+                    _ => derived_value(spec.key, &self.params, self.walker.resolved()).unwrap_or(min),
+                };
+                let step = App::fine_step(spec);
+                // Land on the step grid, so that repeated presses give round numbers.
+                let x = ((now / step).round() + steps.signum() * steps.abs().max(1.0)) * step;
+                let x = ((x.clamp(min, max)) * 1e9).round() / 1e9;
+                Value::Real(x)
+            }
+            (Kind::Int { min, max }, Value::Int(n)) => Value::Int((n + steps as i64).clamp(min, max)),
+            (Kind::Choice(words), Value::Word(w)) => {
+                let i = words.iter().position(|x| *x == w).unwrap_or(0) as i64;
+                let n = words.len() as i64;
+                Value::Word(words[(i + steps.signum() as i64).rem_euclid(n) as usize])
+            }
+            (Kind::Bool, Value::Bool(b)) => Value::Bool(!b),
+            _ => return,
+        };
+        self.set_value(spec, &new);
+    }
+
+    /// Sets a key to a value already valid for its kind, through the config's cross-checks.
+    pub(super) fn set_value(&mut self, spec: &ParamSpec, value: &Value) {
+        if (spec.get)(&self.params) == *value {
+            return;
+        }
+        let mut params = self.params.clone();
+        (spec.set)(&mut params, value);
+        let problems = config::cross_check(&params);
+        if let Some((_, message)) = problems.first() {
+            self.message = Some(format!("{}: {message}", spec.key));
+            return;
+        }
+        let what = format!("{} = {}", spec.key, crate::config::render::value_text(value).unwrap_or("(derived)".into()));
+        self.apply(params, what, true);
+    }
+
+    /// Sets the selected key from typed text, validated like the config file and `--set`.
+    /// Returns the error to show, if refused.
+    pub fn set_typed(&mut self, text: &str) -> Result<(), String> {
+        let spec = &PARAMS[self.selected];
+        let text = text.trim();
+        if text.is_empty() || text == "auto" {
+            if matches!(spec.kind, Kind::Real { auto: true, .. }) {
+                self.set_value(spec, &Value::Auto);
+                return Ok(());
+            }
+            return Err(format!("{}: expected {}", spec.key, spec.valid_range()));
+        }
+        let mut loader = Loader::from_params(self.params.clone());
+        loader.apply_set(&format!("{}={text}", spec.key), 1);
+        match loader.finish() {
+            Ok(params) => {
+                if params != self.params {
+                    self.apply(params, format!("{} = {text}", spec.key), true);
+                }
+                Ok(())
+            }
+            Err(errors) => {
+                Err(errors.0.iter().map(|e| format!("{}: {}", e.key, e.message)).collect::<Vec<_>>().join("; "))
+            }
+        }
+    }
+
+    /// Puts `params` in force: live on the walk where the model allows, else a restart.
+    pub(super) fn apply(&mut self, params: WalkParams, what: String, record: bool) {
+        let before = std::mem::replace(&mut self.params, params.clone());
+        match self.walker.set_params(&params) {
+            Ok(true) => {}
+            Ok(false) => self.restart(),
+            Err(e) => {
+                self.params = before;
+                self.message = Some(format!("refused: {e}"));
+                return;
+            }
+        }
+        if record {
+            self.undo.push(Edit { before, after: params, what: what.clone() });
+            self.redo.clear();
+        }
+        self.message = Some(what);
+    }
+
+    pub(super) fn undo(&mut self) {
+        match self.undo.pop() {
+            Some(edit) => {
+                self.apply(edit.before.clone(), format!("undone: {}", edit.what), false);
+                self.redo.push(edit);
+            }
+            None => self.message = Some("nothing to undo".into()),
+        }
+    }
+
+    pub(super) fn redo(&mut self) {
+        match self.redo.pop() {
+            Some(edit) => {
+                self.apply(edit.after.clone(), format!("redone: {}", edit.what), false);
+                self.undo.push(edit);
+            }
+            None => self.message = Some("nothing to redo".into()),
+        }
+    }
+}
