@@ -98,7 +98,7 @@ pub fn checks(frames: &[Frame]) -> Checks {
 
 /// Counts non-finite numbers in a frame.
 #[must_use]
-pub fn non_finite_in(f: &Frame) -> u64 {
+pub(crate) fn non_finite_in(f: &Frame) -> u64 {
     let mut values = vec![
         f.time_s,
         f.pelvis.x,

@@ -10,7 +10,7 @@ use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 
 /// The solvers named in `list` (comma-separated), or a message naming the valid ones.
-pub fn parse_solvers(list: &str) -> Result<Vec<IkSolverKind>, String> {
+pub(crate) fn parse_solvers(list: &str) -> Result<Vec<IkSolverKind>, String> {
     let mut solvers = Vec::new();
     for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
         let Some(kind) = IkSolverKind::from_name(name) else {

@@ -3,12 +3,12 @@
 //! literal, or a key with a newline in it (`"a\nb" = 1`); none of that may reach stderr as is.
 
 /// Most characters of user text (a value, a key) that a message echoes.
-pub const ECHO_CHARS: usize = 80;
+pub(crate) const ECHO_CHARS: usize = 80;
 
 /// Most characters of a message (after the place); with the key, a line stays within about
 /// 300 characters. Lists in messages give way to a pointer to `gaitlab init` beyond it, and
 /// every message is cut to it as a safety net.
-pub const MESSAGE_CHARS: usize = 250;
+pub(crate) const MESSAGE_CHARS: usize = 250;
 
 /// The escape of `c` if it must not be shown as is: line breaks, tabs, other control
 /// characters and the bidirectional overrides that can make a line read differently from
@@ -28,7 +28,7 @@ fn escape(c: char) -> Option<String> {
 /// `s` with control characters escaped (as TOML writes them: `\n`, `\u001B`), cut to at most
 /// `max` characters, the last of them an ellipsis when anything was cut.
 #[must_use]
-pub fn clip(s: &str, max: usize) -> String {
+pub(crate) fn clip(s: &str, max: usize) -> String {
     clip_pieces(s.chars().map(|c| escape(c).unwrap_or_else(|| c.to_string())), max)
 }
 
@@ -52,14 +52,14 @@ fn clip_pieces(pieces: impl Iterator<Item = String>, max: usize) -> String {
 
 /// User text echoed bare (a key, a number literal): [`clip`] to [`ECHO_CHARS`].
 #[must_use]
-pub fn echo(s: &str) -> String {
+pub(crate) fn echo(s: &str) -> String {
     clip(s, ECHO_CHARS)
 }
 
 /// A user string echoed in double quotes, `"` and `\` escaped as TOML writes them, cut to
 /// [`ECHO_CHARS`] inside the quotes.
 #[must_use]
-pub fn quoted(s: &str) -> String {
+pub(crate) fn quoted(s: &str) -> String {
     let pieces = s.chars().map(|c| match c {
         '"' => "\\\"".to_string(),
         '\\' => "\\\\".to_string(),
@@ -78,14 +78,14 @@ pub fn number(x: f64) -> String {
 
 /// "a" or "an" before `word`.
 #[must_use]
-pub fn article(word: &str) -> &'static str {
+pub(crate) fn article(word: &str) -> &'static str {
     if word.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" }
 }
 
 /// `(what: a, b, c)` when that fits in `room` characters, else a pointer to `gaitlab init`,
 /// which lists everything with its range.
 #[must_use]
-pub fn listing(what: &str, items: &[&str], room: usize) -> String {
+pub(crate) fn listing(what: &str, items: &[&str], room: usize) -> String {
     let full = format!("({what}: {})", items.join(", "));
     if items.is_empty() {
         String::new()

@@ -79,7 +79,7 @@ pub const MAX_PROBLEMS: usize = 100;
 
 /// Reads TOML into parameters, remembering where each key was set.
 #[derive(Debug, Default)]
-pub struct Loader {
+pub(crate) struct Loader {
     params: WalkParams,
     places: HashMap<String, Place>,
     errors: Vec<ConfigError>,
@@ -98,7 +98,7 @@ fn char_floor(text: &str, at: usize) -> usize {
 
 /// Line and column (1-based, in characters) of byte offset `at` in `text`.
 #[must_use]
-pub fn line_col(text: &str, at: usize) -> (usize, usize) {
+pub(crate) fn line_col(text: &str, at: usize) -> (usize, usize) {
     let before = &text[..char_floor(text, at)];
     let line = before.matches('\n').count() + 1;
     let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
@@ -144,7 +144,7 @@ impl Loader {
 
     /// Starts from given parameters (a loaded file, before `--set`).
     #[must_use]
-    pub fn from_params(params: WalkParams) -> Self {
+    pub(crate) fn from_params(params: WalkParams) -> Self {
         Loader { params, ..Loader::default() }
     }
 
@@ -162,7 +162,7 @@ impl Loader {
 
     /// Reads a whole TOML document.
     /// A leading byte-order mark is skipped; columns count from after it.
-    pub fn read_str(&mut self, text: &str, path: &str) {
+    pub(crate) fn read_str(&mut self, text: &str, path: &str) {
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         self.label = Some(path.to_string());
         let locator = Locator::new(text);
@@ -304,7 +304,7 @@ impl Loader {
     }
 
     /// Applies `--set KEY=VALUE` (`index` counts the `--set`s from 1, for messages).
-    pub fn apply_set(&mut self, assignment: &str, index: usize) {
+    pub(crate) fn apply_set(&mut self, assignment: &str, index: usize) {
         let label = format!("--set #{index}");
         let Some((key_text, value_text)) = assignment.split_once('=') else {
             self.error(
@@ -397,12 +397,6 @@ impl Loader {
             .min_by_key(|p| (p.1, p.2))
             .cloned()
             .unwrap_or_else(|| (self.label.clone().unwrap_or_else(|| "config".into()), 1, 1))
-    }
-
-    /// Parameters read so far.
-    #[must_use]
-    pub fn params(&self) -> &WalkParams {
-        &self.params
     }
 }
 

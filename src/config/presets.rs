@@ -21,11 +21,11 @@ pub static PRESETS: &[(&str, &str)] = &[
 
 /// What the default preset is. `configs/default.toml` is `gaitlab init`'s output, which
 /// writes this line first, so the description cannot come from the file itself.
-pub const DEFAULT_DESCRIPTION: &str = "normal adult walk at 1.3 m/s on level ground";
+pub(crate) const DEFAULT_DESCRIPTION: &str = "normal adult walk at 1.3 m/s on level ground";
 
 /// The description line of a preset's text.
 #[must_use]
-pub fn description(text: &str) -> &str {
+pub(crate) fn description(text: &str) -> &str {
     text.lines().next().and_then(|l| l.strip_prefix("# preset:")).map_or("", str::trim)
 }
 

@@ -7,7 +7,7 @@ use crate::model::params::{Resolved, WalkParams};
 
 /// A number as TOML writes it: always with a decimal point, at most 4 decimals.
 #[must_use]
-pub fn toml_number(x: f64) -> String {
+pub(crate) fn toml_number(x: f64) -> String {
     let rounded = (x * 1e4).round() / 1e4;
     let rounded = if rounded == 0.0 { 0.0 } else { rounded };
     if rounded.fract() == 0.0 { format!("{rounded:.1}") } else { format!("{rounded}") }
@@ -15,7 +15,7 @@ pub fn toml_number(x: f64) -> String {
 
 /// What a derived key resolves to, in the key's unit.
 #[must_use]
-pub fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f64> {
+pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f64> {
     let d = &r.dims;
     let deg = f64::to_degrees;
     let unsway = |x: f64| if p.walk.sway > 0.0 { x / p.walk.sway } else { x };

@@ -86,7 +86,7 @@ impl ParamSpec {
 
     /// The valid values, as said in error messages and docs.
     #[must_use]
-    pub fn valid_range(&self) -> String {
+    pub(crate) fn valid_range(&self) -> String {
         match self.kind {
             Kind::Real { min, max, auto } => {
                 let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
@@ -412,11 +412,12 @@ pub fn curve_limits(c: CurveName) -> CurveLimits {
 }
 
 /// The config groups, in order.
-pub const GROUPS: &[&str] = &["body", "walk", "pelvis", "legs", "arms", "ik", "optimiser", "terrain", "sim", "curves"];
+pub(crate) const GROUPS: &[&str] =
+    &["body", "walk", "pelvis", "legs", "arms", "ik", "optimiser", "terrain", "sim", "curves"];
 
 /// Levenshtein distance, for "did you mean".
 #[must_use]
-pub fn edit_distance(a: &str, b: &str) -> usize {
+pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {
@@ -436,7 +437,7 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 /// The distance is at least the difference in length, so a word far longer or shorter than a
 /// candidate is passed over without measuring (a megabyte-long key costs one count).
 #[must_use]
-pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub(crate) fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let len = word.chars().count();
     candidates
         .into_iter()

@@ -70,7 +70,7 @@ pub fn read_source(path: &Path) -> Result<String, ConfigErrors> {
 }
 
 /// [`read_source`] with another size limit and deadline.
-pub fn read_source_within(path: &Path, limit: u64, deadline: Duration) -> Result<String, ConfigErrors> {
+pub(crate) fn read_source_within(path: &Path, limit: u64, deadline: Duration) -> Result<String, ConfigErrors> {
     let label = path.display().to_string();
     let meta = std::fs::metadata(path).map_err(|e| refuse(&label, format!("cannot read the config: {e}")))?;
     if meta.is_dir() {
@@ -139,7 +139,7 @@ fn read_on_helper(path: PathBuf, limit: u64, deadline: Duration) -> Result<Vec<u
 }
 
 /// A config's bytes as text: a leading byte-order mark skipped, invalid UTF-8 reported at
-/// its line and column (characters, as [`line_col`] counts them) with the offending byte.
+/// its line and column (characters, as `line_col` counts them) with the offending byte.
 pub fn decode_source(mut bytes: Vec<u8>, label: &str) -> Result<String, ConfigErrors> {
     if bytes.starts_with(BOM) {
         bytes.drain(..BOM.len());

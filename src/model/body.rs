@@ -31,7 +31,7 @@ impl Side {
 
     /// +1 for right (+z), −1 for left.
     #[must_use]
-    pub fn sign(self) -> f64 {
+    pub(crate) fn sign(self) -> f64 {
         match self {
             Side::Right => 1.0,
             Side::Left => -1.0,
@@ -58,7 +58,7 @@ impl Side {
 
     /// `"r"` or `"l"`, as in the joint table's column names.
     #[must_use]
-    pub fn suffix(self) -> &'static str {
+    pub(crate) fn suffix(self) -> &'static str {
         match self {
             Side::Right => "r",
             Side::Left => "l",
@@ -94,7 +94,7 @@ pub enum Bone {
 }
 
 /// Number of bones.
-pub const BONE_COUNT: usize = 21;
+pub(crate) const BONE_COUNT: usize = 21;
 
 impl Bone {
     /// All bones, parents before children.
@@ -191,7 +191,7 @@ impl Bone {
     }
     /// The shin of `side`.
     #[must_use]
-    pub fn shin(side: Side) -> Bone {
+    pub(crate) fn shin(side: Side) -> Bone {
         if side == Side::Right { Bone::ShinR } else { Bone::ShinL }
     }
     /// The foot of `side`.
@@ -206,17 +206,17 @@ impl Bone {
     }
     /// The shoulder girdle (clavicle) of `side`.
     #[must_use]
-    pub fn shoulder(side: Side) -> Bone {
+    pub(crate) fn shoulder(side: Side) -> Bone {
         if side == Side::Right { Bone::ShoulderR } else { Bone::ShoulderL }
     }
     /// The upper arm of `side`.
     #[must_use]
-    pub fn upper_arm(side: Side) -> Bone {
+    pub(crate) fn upper_arm(side: Side) -> Bone {
         if side == Side::Right { Bone::UpperArmR } else { Bone::UpperArmL }
     }
     /// The forearm of `side`.
     #[must_use]
-    pub fn forearm(side: Side) -> Bone {
+    pub(crate) fn forearm(side: Side) -> Bone {
         if side == Side::Right { Bone::ForearmR } else { Bone::ForearmL }
     }
     /// The hand of `side`.
@@ -257,7 +257,7 @@ pub struct BodyDims {
 
 /// Where the toe joint sits along the foot, as a fraction of foot length from the heel (the
 /// metatarsal heads; Winter's foot markers put them at about three quarters).
-pub const BALL_FRACTION: f64 = 0.75;
+pub(crate) const BALL_FRACTION: f64 = 0.75;
 
 impl BodyDims {
     /// Lengths from height and sex with Drillis & Contini's proportions. The widths are
@@ -266,7 +266,7 @@ impl BodyDims {
     /// 0.220 H (male) and 0.200 H (female) apart (biacromial 0.259 H / 0.236 H less the
     /// humeral heads).
     #[must_use]
-    pub fn from_height(height: f64, sex: Sex) -> Self {
+    pub(crate) fn from_height(height: f64, sex: Sex) -> Self {
         let (hip_width, shoulder_width) = match sex {
             Sex::Male => (0.098, 0.220),
             Sex::Female => (0.108, 0.200),
@@ -289,46 +289,46 @@ impl BodyDims {
 
     /// Hip-joint height when standing: thigh + shank + ankle height.
     #[must_use]
-    pub fn standing_hip_height(&self) -> f64 {
+    pub(crate) fn standing_hip_height(&self) -> f64 {
         self.thigh + self.shank + self.ankle_height
     }
 
     /// Full leg reach from hip to ankle.
     #[must_use]
-    pub fn leg_reach(&self) -> f64 {
+    pub(crate) fn leg_reach(&self) -> f64 {
         self.thigh + self.shank
     }
 
     /// Heel contact point in the foot's frame (origin at the ankle joint): on the sole, under
     /// the ankle [6.3.2, fig 6.4].
     #[must_use]
-    pub fn heel_local(&self) -> DVec3 {
+    pub(crate) fn heel_local(&self) -> DVec3 {
         DVec3::new(0.0, -self.ankle_height, 0.0)
     }
 
     /// Toe joint (ball of the foot) in the foot's frame, on the sole.
     #[must_use]
-    pub fn ball_local(&self) -> DVec3 {
+    pub(crate) fn ball_local(&self) -> DVec3 {
         DVec3::new(BALL_FRACTION * self.foot_length, -self.ankle_height, 0.0)
     }
 
     /// Length of the toe segment, ball to toe tip.
     #[must_use]
-    pub fn toe_length(&self) -> f64 {
+    pub(crate) fn toe_length(&self) -> f64 {
         (1.0 - BALL_FRACTION) * self.foot_length
     }
 
     /// The three trunk segments pelvis→spine, spine→chest, chest→neck (l1, l2, l3 of the
     /// frontal-plane compensation [6.3.4]): 35 %, 35 % and 30 % of the trunk.
     #[must_use]
-    pub fn trunk_segments(&self) -> [f64; 3] {
+    pub(crate) fn trunk_segments(&self) -> [f64; 3] {
         [0.35 * self.trunk, 0.35 * self.trunk, 0.30 * self.trunk]
     }
 
     /// Offset of each bone's joint from its parent's joint in the rest pose (the skeleton's
     /// local translations; BVH OFFSETs).
     #[must_use]
-    pub fn rest_offset(&self, bone: Bone) -> DVec3 {
+    pub(crate) fn rest_offset(&self, bone: Bone) -> DVec3 {
         use Bone::*;
         let [l1, l2, l3] = self.trunk_segments();
         let hip = 0.5 * self.hip_width;
@@ -356,7 +356,7 @@ impl BodyDims {
 
     /// Where a bone ends in its own frame (for drawing leaf bones: head top, hand tip, toe tip).
     #[must_use]
-    pub fn end_offset(&self, bone: Bone) -> DVec3 {
+    pub(crate) fn end_offset(&self, bone: Bone) -> DVec3 {
         match bone {
             Bone::Head => DVec3::new(0.0, 0.65 * self.head_neck, 0.0),
             Bone::HandR | Bone::HandL => DVec3::new(0.0, -self.hand, 0.0),
@@ -410,7 +410,7 @@ impl Pose {
 
     /// Rotation of `bone` relative to its parent (BVH channels).
     #[must_use]
-    pub fn local_rotation(&self, bone: Bone) -> DQuat {
+    pub(crate) fn local_rotation(&self, bone: Bone) -> DQuat {
         match bone.parent() {
             None => self.rot(bone),
             Some(p) => self.rot(p).inverse() * self.rot(bone),

@@ -89,7 +89,7 @@ impl Curve {
     }
 
     /// Builds a curve from `(x, y)` pairs.
-    pub fn from_pairs(name: impl Into<String>, pairs: &[(f64, f64)]) -> Result<Self, CurveError> {
+    pub(crate) fn from_pairs(name: impl Into<String>, pairs: &[(f64, f64)]) -> Result<Self, CurveError> {
         Self::new(name, pairs.iter().map(|&(x, y)| DVec2::new(x, y)).collect())
     }
 
@@ -112,7 +112,7 @@ impl Curve {
     }
 
     /// Checks point count, finiteness and monotone x.
-    pub fn validate(&self) -> Result<(), CurveError> {
+    pub(crate) fn validate(&self) -> Result<(), CurveError> {
         let n = self.points.len();
         if n < 4 || !(n - 1).is_multiple_of(3) {
             return Err(CurveError::PointCount { curve: self.name.clone(), count: n });
@@ -155,13 +155,13 @@ impl Curve {
 
     /// x of the first control point.
     #[must_use]
-    pub fn x_start(&self) -> f64 {
+    pub(crate) fn x_start(&self) -> f64 {
         self.points[0].x
     }
 
     /// x of the last control point.
     #[must_use]
-    pub fn x_end(&self) -> f64 {
+    pub(crate) fn x_end(&self) -> f64 {
         self.points[self.points.len() - 1].x
     }
 
@@ -176,7 +176,7 @@ impl Curve {
     /// Solves x(t) = x inside segment `j` for t ∈ [0, 1]: Newton steps, falling back to
     /// bisection whenever a step leaves the bracket, to 1e-14 in x.
     #[must_use]
-    pub fn solve_t(&self, j: usize, x: f64) -> f64 {
+    pub(crate) fn solve_t(&self, j: usize, x: f64) -> f64 {
         let p = &self.points[3 * j..3 * j + 4];
         let (x0, x1, x2, x3) = (p[0].x, p[1].x, p[2].x, p[3].x);
         if x <= x0 {
@@ -329,7 +329,7 @@ impl Curve {
     /// Makes the curve arrive at its end with a slope of at most `max_slope` (dy/dx) by moving
     /// the last handle only: the end point and every join stay where they are. Returns
     /// whether anything changed.
-    pub fn limit_end_slope(&mut self, max_slope: f64) -> bool {
+    pub(crate) fn limit_end_slope(&mut self, max_slope: f64) -> bool {
         let n = self.points.len();
         let (handle, end) = (self.points[n - 2], self.points[n - 1]);
         let dx = end.x - handle.x;
@@ -341,7 +341,7 @@ impl Curve {
     }
 
     /// Adds `dy` to every control point: moves the whole curve up without changing its shape.
-    pub fn offset_y(&mut self, dy: f64) {
+    pub(crate) fn offset_y(&mut self, dy: f64) {
         for p in &mut self.points {
             p.y += dy;
         }
@@ -374,7 +374,7 @@ impl Curve {
     }
 
     /// Overwrites every control point with `target`'s (same count), keeping the name.
-    pub fn copy_points_from(&mut self, target: &Curve) {
+    pub(crate) fn copy_points_from(&mut self, target: &Curve) {
         self.points.clone_from(&target.points);
     }
 
@@ -398,7 +398,7 @@ impl Curve {
 /// A curve over one gait cycle, x ∈ [0, 1], whose live edits take effect without a jump and
 /// complete when the cycle wraps.
 #[derive(Clone, Debug)]
-pub struct LiveCurve {
+pub(crate) struct LiveCurve {
     playing: Curve,
     target: Curve,
 }
@@ -412,7 +412,7 @@ impl LiveCurve {
 
     /// Asks for `target` while the cycle is at `x_now`: the segments still to come switch now
     /// (see [`Curve::live_change`]), the rest when the cycle wraps.
-    pub fn change_to(&mut self, target: Curve, x_now: f64) {
+    pub(crate) fn change_to(&mut self, target: Curve, x_now: f64) {
         self.playing.live_change(&target, x_now);
         self.target = target;
     }
@@ -420,7 +420,7 @@ impl LiveCurve {
     /// Call when the cycle wraps from x = 1 back to 0. The curve's first point is pinned to
     /// where the old one ended, so the wrap is continuous even when an edit arrived in the
     /// last segments of the previous cycle; the first handle moves with it to keep the slope.
-    pub fn wrap(&mut self) {
+    pub(crate) fn wrap(&mut self) {
         if self.playing == self.target {
             return;
         }
@@ -441,14 +441,8 @@ impl LiveCurve {
 
     /// The curve being played.
     #[must_use]
-    pub fn playing(&self) -> &Curve {
+    pub(crate) fn playing(&self) -> &Curve {
         &self.playing
-    }
-
-    /// The curve asked for.
-    #[must_use]
-    pub fn target(&self) -> &Curve {
-        &self.target
     }
 }
 

@@ -85,24 +85,8 @@ impl CurveName {
 
     /// The curve of a config name.
     #[must_use]
-    pub fn from_key(key: &str) -> Option<CurveName> {
+    pub(crate) fn from_key(key: &str) -> Option<CurveName> {
         CurveName::ALL.into_iter().find(|c| c.key() == key)
-    }
-
-    /// What x and y mean, for docs and plot axes.
-    #[must_use]
-    pub fn axes(self) -> (&'static str, &'static str) {
-        use CurveName::*;
-        match self {
-            PelvisObliquity | PelvisRotation | PelvisTilt | PelvisLateral | Shoulder | Elbow => {
-                ("gait cycle (0-1)", "unit shape (±1)")
-            }
-            PelvisVertical | PelvisForwardDsMs | PelvisForwardMsDs => ("half step (0-1)", "progress (0-1)"),
-            HeelRise => ("heel-rise phase (0-1)", "foot-ground angle (deg)"),
-            SwingForward | SwingLateral => ("swing (0-1)", "weight (0-1)"),
-            SwingAnkle => ("swing (0-1)", "foot pitch (deg)"),
-            SwingHeelHeight => ("swing (0-1)", "heel height (m)"),
-        }
     }
 
     /// Whether the curve repeats over the gait cycle (its ends must meet).
@@ -206,7 +190,7 @@ pub struct CurveSet {
 
 impl CurveSet {
     /// Defaults with the given overrides (control points by curve name).
-    pub fn with_overrides<'a>(
+    pub(crate) fn with_overrides<'a>(
         overrides: impl IntoIterator<Item = (&'a String, &'a Vec<(f64, f64)>)>,
     ) -> Result<Self, CurveError> {
         let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve()).collect();

@@ -15,13 +15,13 @@
 //! acceleration at all, and the cost alone would drive the pelvis forward into a stiff,
 //! hyper-extended push-off, far past the fixed rule's hip extension and heel rise (figures in
 //! benches/README.md, "Optimiser allowances"). A candidate needing more than
-//! [`HEEL_RISE_SLACK_DEG`](crate::model::params::HEEL_RISE_SLACK_DEG) of extra heel rise beyond what the fixed rule's position needs
+//! `HEEL_RISE_SLACK_DEG` of extra heel rise beyond what the fixed rule's position needs
 //! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
 //!
 //! Downhill the same push can come without extra heel rise: once the pelvis kept its speed
 //! through its keys, the slope_down walk's optimum moved the pelvis far forward and extended
 //! the trailing hip well past normal gait's 10–20° (see benches/README.md). A candidate asking
-//! more than [`HIP_EXTENSION_SLACK_DEG`](crate::model::params::HIP_EXTENSION_SLACK_DEG) of hip extension beyond the fixed rule's is
+//! more than `HIP_EXTENSION_SLACK_DEG` of hip extension beyond the fixed rule's is
 //! infeasible too ([`StepProblem::hip_extension_allowance`]).
 
 use crate::model::body::Side;

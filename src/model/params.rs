@@ -14,14 +14,14 @@ use std::collections::BTreeMap;
 /// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
 /// beyond what the fixed rule's position asks (what the fixed rule itself asks is in
 /// benches/README.md, "Optimiser allowances"); `optimiser.heel_rise_slack_deg`.
-pub const HEEL_RISE_SLACK_DEG: f64 = 0.5;
+pub(crate) const HEEL_RISE_SLACK_DEG: f64 = 0.5;
 
 /// Default hip extension (deg) that a candidate may ask of a stance leg beyond what the fixed
 /// rule's position asks; `optimiser.hip_extension_slack_deg`. Why 5°: with no slack the
 /// optimiser's whole gain on a flat walk would be a longer push-off, so it keeps the fixed
 /// rule; 5° lets it choose while keeping hip extension in the normal range (the measured
 /// trade-off is in benches/README.md, "optimiser allowances").
-pub const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
+pub(crate) const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 
 /// `[body]`.
 #[derive(Clone, Debug, PartialEq)]
@@ -478,7 +478,7 @@ pub struct Resolved {
 /// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body;
 /// Sekiya & Nagasaki 1998 report 0.0064 for men, nearly constant across speeds. Scaled with
 /// height.
-pub const WALK_RATIO_PER_175: f64 = 0.0064;
+pub(crate) const WALK_RATIO_PER_175: f64 = 0.0064;
 
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):

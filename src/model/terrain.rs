@@ -4,8 +4,6 @@
 //! [6.2.1], except stairs, whose vertical risers a height field of finite segments would
 //! smear into ramps: stairs keep their exact step function.
 
-use std::f64::consts::PI;
-
 /// What the ground looks like.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TerrainKind {
@@ -70,7 +68,7 @@ impl SplitMix64 {
     }
 
     /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
+    pub(crate) fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -79,7 +77,7 @@ impl SplitMix64 {
     }
 
     /// A uniform number in [−1, 1), from the top 53 bits.
-    pub fn next_signed_unit(&mut self) -> f64 {
+    pub(crate) fn next_signed_unit(&mut self) -> f64 {
         let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
         2.0 * unit - 1.0
     }
@@ -169,7 +167,7 @@ impl Terrain {
 
     /// Highest ground between `x0` and `x1` (corners included).
     #[must_use]
-    pub fn max_height_between(&self, x0: f64, x1: f64) -> f64 {
+    pub(crate) fn max_height_between(&self, x0: f64, x1: f64) -> f64 {
         let mut h = self.height(x0).max(self.height(x1));
         for c in self.corners_between(x0, x1) {
             // A riser has two heights at one x: take the upper one.
@@ -193,7 +191,8 @@ impl Terrain {
     /// by the dot product of the two directions [6.3.2]; positive when the toe points above
     /// the ground line.
     #[must_use]
-    pub fn foot_angle(&self, heel_x: f64, heel_y: f64, toe_x: f64, toe_y: f64) -> f64 {
+    #[cfg(test)]
+    pub(crate) fn foot_angle(&self, heel_x: f64, heel_y: f64, toe_x: f64, toe_y: f64) -> f64 {
         let foot = glam::DVec2::new(toe_x - heel_x, toe_y - heel_y);
         let ground = glam::DVec2::new(toe_x - heel_x, self.height(toe_x) - self.height(heel_x));
         let cos = (foot.dot(ground) / (foot.length() * ground.length()).max(1e-12)).clamp(-1.0, 1.0);
@@ -205,7 +204,7 @@ impl Terrain {
     /// piece of ground, as near to `heel_x` as possible: on stairs a foot must not straddle a
     /// nosing. Other kinds return `heel_x` unchanged.
     #[must_use]
-    pub fn settle_footfall(&self, heel_x: f64, foot_m: f64, margin_m: f64) -> f64 {
+    pub(crate) fn settle_footfall(&self, heel_x: f64, foot_m: f64, margin_m: f64) -> f64 {
         let TerrainKind::Stairs { run_m, count, start_x_m, .. } = &self.kind else {
             return heel_x;
         };
@@ -264,12 +263,6 @@ fn midpoint_displacement(seed: u64, roughness: f64, amplitude_m: f64, segment_m:
     // Start at ground level so the walk's first steps are on height 0 like every other kind.
     let h0 = h[0];
     h.iter().map(|v| v - h0).collect()
-}
-
-/// Grade in per cent from an angle in degrees.
-#[must_use]
-pub fn grade_pct_from_deg(angle_deg: f64) -> f64 {
-    (angle_deg * PI / 180.0).tan() * 100.0
 }
 
 #[cfg(test)]

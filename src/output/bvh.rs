@@ -63,7 +63,7 @@ fn channel_order() -> Vec<Bone> {
 }
 
 /// Writes the HIERARCHY and the MOTION header for `frames` frames at `fps`.
-pub fn write_header(out: &mut dyn Write, dims: &BodyDims, frames: usize, fps: f64) -> io::Result<()> {
+pub(crate) fn write_header(out: &mut dyn Write, dims: &BodyDims, frames: usize, fps: f64) -> io::Result<()> {
     writeln!(out, "HIERARCHY")?;
     write_joint(out, dims, Bone::Pelvis, 0)?;
     writeln!(out, "MOTION")?;
@@ -72,7 +72,7 @@ pub fn write_header(out: &mut dyn Write, dims: &BodyDims, frames: usize, fps: f6
 }
 
 /// Writes one MOTION line for `pose`.
-pub fn write_frame(out: &mut dyn Write, pose: &Pose, line: &mut String) -> io::Result<()> {
+pub(crate) fn write_frame(out: &mut dyn Write, pose: &Pose, line: &mut String) -> io::Result<()> {
     use std::fmt::Write as _;
     line.clear();
     for bone in channel_order() {

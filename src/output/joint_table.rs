@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::io::{self, Write};
 
 /// The columns, in order.
-pub const COLUMNS: &[&str] = &[
+pub(crate) const COLUMNS: &[&str] = &[
     "frame",
     "time_s",
     "phase_r",
@@ -71,7 +71,7 @@ fn push_fixed(line: &mut String, x: f64, decimals: usize) {
 }
 
 /// Writes the header line.
-pub fn write_header(out: &mut dyn Write) -> io::Result<()> {
+pub(crate) fn write_header(out: &mut dyn Write) -> io::Result<()> {
     writeln!(out, "{}", COLUMNS.join(","))
 }
 
@@ -113,18 +113,6 @@ pub fn format_row(f: &Frame, line: &mut String) {
     }
     cell(line, r.ground_under_heel, pos);
     cell(line, l.ground_under_heel, pos);
-}
-
-/// Writes a header and a row for every frame.
-pub fn write_frames<'a>(out: &mut dyn Write, frames: impl IntoIterator<Item = &'a Frame>) -> io::Result<()> {
-    write_header(out)?;
-    let mut line = String::with_capacity(512);
-    for f in frames {
-        format_row(f, &mut line);
-        line.push('\n');
-        out.write_all(line.as_bytes())?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]

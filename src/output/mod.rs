@@ -66,7 +66,10 @@ impl std::error::Error for OutputError {}
 
 /// Writes `path` so that it is either the old file or the whole new one, never half of it
 /// (see the module's rule for what else may sit at `path`).
-pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn io::Write) -> io::Result<()>) -> Result<(), OutputError> {
+pub(crate) fn write_atomic(
+    path: &Path,
+    write: impl FnOnce(&mut dyn io::Write) -> io::Result<()>,
+) -> Result<(), OutputError> {
     let target = FileTarget::resolve(path)?;
     write_file(&target, write)
 }

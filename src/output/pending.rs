@@ -1,9 +1,9 @@
 //! Temp files and partial folders that exist only while a write is under way.
 //!
 //! Each is registered while it exists, so that a signal (SIGINT, SIGTERM, SIGHUP) can remove
-//! them before the process ends: the headless commands install [`remove_on_signal`], the lab
-//! calls [`remove_all`] on its way out. A run killed with SIGKILL cannot clean up, so the
-//! next write to the same place calls [`sweep_stale`]: it removes entries of gaitlab's own
+//! them before the process ends: the headless commands install `remove_on_signal`, the lab
+//! calls `remove_all` on its way out. A run killed with SIGKILL cannot clean up, so the
+//! next write to the same place calls `sweep_stale`: it removes entries of gaitlab's own
 //! naming (`.NAME.tmp-PID-N`, `.NAME.partial-PID`, `.NAME.old-PID`) whose PID is dead.
 
 use std::fs;
@@ -21,7 +21,7 @@ const KINDS: [&str; 3] = ["tmp", "partial", "old"];
 /// A temp file or folder that is removed when dropped unless [`Pending::keep`] was called
 /// (after it was renamed into place).
 #[derive(Debug)]
-pub struct Pending {
+pub(crate) struct Pending {
     path: PathBuf,
     kept: bool,
 }
@@ -72,7 +72,7 @@ fn unregister(path: &Path) {
 
 /// The folder a target sits in (`.` for a bare name).
 #[must_use]
-pub fn parent_dir(target: &Path) -> PathBuf {
+pub(crate) fn parent_dir(target: &Path) -> PathBuf {
     target.parent().filter(|p| !p.as_os_str().is_empty()).map_or_else(|| PathBuf::from("."), Path::to_path_buf)
 }
 
@@ -92,7 +92,7 @@ fn remove_path(path: &Path) {
 }
 
 /// Removes every registered temp now (the process is about to end).
-pub fn remove_all() {
+pub(crate) fn remove_all() {
     let paths: Vec<PathBuf> = lock().drain(..).collect();
     for p in &paths {
         remove_path(p);
@@ -102,7 +102,7 @@ pub fn remove_all() {
 /// Starts a thread that, on SIGINT, SIGTERM or SIGHUP, removes every registered temp and
 /// ends the process with 128 + the signal's number (the shell's convention). The previous
 /// output stays as it was, since only temps are touched.
-pub fn remove_on_signal() -> io::Result<()> {
+pub(crate) fn remove_on_signal() -> io::Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])?;
     std::thread::Builder::new().name("gaitlab-signals".into()).spawn(move || {
@@ -136,7 +136,7 @@ fn temp_pid(file_name: &str, target_name: &str) -> Option<u32> {
 
 /// Removes temps of `target`'s naming left by processes that no longer run. Returns how
 /// many were removed.
-pub fn sweep_stale(target: &Path) -> usize {
+pub(crate) fn sweep_stale(target: &Path) -> usize {
     let Some(name) = target.file_name().map(|n| n.to_string_lossy().into_owned()) else { return 0 };
     let Ok(entries) = fs::read_dir(parent_dir(target)) else { return 0 };
     let own = std::process::id();

@@ -170,15 +170,9 @@ impl App {
         Ok(app)
     }
 
-    /// The embedded default config, unsaved to any path.
-    pub fn with_default() -> Result<Self, String> {
-        let params = presets::params("default").expect("listed").map_err(|e| e.to_string())?;
-        App::new(params, presets::default_text().to_string(), None)
-    }
-
     /// Shows wall-clock figures (search times): the walk is given a clock to time its pelvis
     /// searches with. Off in tests, whose screens must repeat.
-    pub fn measure_timings(&mut self) {
+    pub(crate) fn measure_timings(&mut self) {
         self.show_timings = true;
         self.walker.set_clock(Some(std::time::Instant::now));
     }
@@ -191,7 +185,7 @@ impl App {
 
     /// The file name shown in the status bar.
     #[must_use]
-    pub fn file_label(&self) -> String {
+    pub(crate) fn file_label(&self) -> String {
         self.path.as_ref().map_or_else(|| "(embedded default)".to_string(), |p| p.display().to_string())
     }
 
@@ -302,7 +296,7 @@ impl App {
     }
 
     /// Does what `action` asks.
-    pub fn perform(&mut self, action: Action) {
+    pub(crate) fn perform(&mut self, action: Action) {
         self.message = None;
         match action {
             Action::Quit => {
@@ -431,7 +425,7 @@ impl App {
 
     /// What `s` would write now, if anything is unsaved: the text a recovery file keeps.
     #[must_use]
-    pub fn unsaved_text(&self) -> Option<String> {
+    pub(crate) fn unsaved_text(&self) -> Option<String> {
         if !self.is_modified() {
             return None;
         }

@@ -99,7 +99,7 @@ impl App {
 
     /// Sets the selected key from typed text, validated like the config file and `--set`.
     /// Returns the error to show, if refused.
-    pub fn set_typed(&mut self, text: &str) -> Result<(), String> {
+    pub(crate) fn set_typed(&mut self, text: &str) -> Result<(), String> {
         let spec = &PARAMS[self.selected];
         let text = text.trim();
         if text.is_empty() || text == "auto" {

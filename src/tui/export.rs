@@ -23,7 +23,7 @@ impl std::fmt::Debug for Export {
 }
 
 /// What the lab shows after a poll.
-pub struct News {
+pub(crate) struct News {
     /// The status line.
     pub message: String,
     /// The report is finished (written or failed).
@@ -63,7 +63,7 @@ impl Export {
 
     /// The latest news from the thread, if any (several progress lines coalesce into the last).
     #[must_use]
-    pub fn poll(&self) -> Option<News> {
+    pub(crate) fn poll(&self) -> Option<News> {
         let mut latest = None;
         loop {
             match self.rx.try_recv() {

@@ -88,7 +88,7 @@ impl Action {
 }
 
 /// The default bindings: key (as written in `[keys]`), action.
-pub const DEFAULT_KEYS: &[(&str, Action)] = &[
+pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("q", Action::Quit),
     ("ctrl+c", Action::Quit),
     ("?", Action::Help),
@@ -158,7 +158,7 @@ pub const HELP: &[(&[Action], &str)] = &[
 
 /// A key as written in `[keys]`: `q`, `Q`, `?`, `space`, `enter`, `ctrl+r`, `shift+left`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct KeySpec {
+pub(crate) struct KeySpec {
     /// The key.
     pub code: KeyCode,
     /// With control.
@@ -263,7 +263,7 @@ impl KeyMap {
     /// The defaults with the `[keys]` table of a config's text applied: each named action
     /// gets exactly the keys given (a string or an array of strings), and a key given to one
     /// action is taken from any other. Errors name the file, line, key and what is valid.
-    pub fn from_config(text: &str, path: &str) -> Result<KeyMap, String> {
+    pub(crate) fn from_config(text: &str, path: &str) -> Result<KeyMap, String> {
         let mut map = KeyMap::default();
         let doc: toml_edit::Document<String> =
             text.parse().map_err(|e: toml_edit::TomlError| format!("{path}: {e}"))?;
@@ -306,7 +306,7 @@ impl KeyMap {
 
     /// The action of a key press.
     #[must_use]
-    pub fn action_of(&self, key: KeyEvent) -> Option<Action> {
+    pub(crate) fn action_of(&self, key: KeyEvent) -> Option<Action> {
         self.bindings.iter().find(|(k, _)| k.matches(key)).map(|(_, a)| *a)
     }
 

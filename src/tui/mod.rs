@@ -48,7 +48,7 @@ pub struct Options {
 }
 
 /// The `--marker` names.
-pub const MARKERS: &[(&str, Marker)] =
+pub(crate) const MARKERS: &[(&str, Marker)] =
     &[("braille", Marker::Braille), ("halfblock", Marker::HalfBlock), ("block", Marker::Block)];
 
 /// Builds the lab's state from the options (no terminal needed): the config read, `--set`

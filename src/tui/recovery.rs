@@ -13,12 +13,12 @@ use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
 /// The suffix added to the config's file name.
-pub const SUFFIX: &str = ".recovery";
+pub(crate) const SUFFIX: &str = ".recovery";
 
 /// Where the recovery of `config` goes (`None` config: the embedded default; `None` result:
 /// no place is known, as without `$HOME`).
 #[must_use]
-pub fn path_for(config: Option<&Path>) -> Option<PathBuf> {
+pub(crate) fn path_for(config: Option<&Path>) -> Option<PathBuf> {
     match config {
         Some(path) => {
             let name = path.file_name()?.to_string_lossy().into_owned();

@@ -16,7 +16,7 @@ pub struct TextInput {
 
 /// What a key did to the field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Edit {
+pub(crate) enum Edit {
     /// The text or cursor changed (or the key was an editing key that did nothing).
     Edited,
     /// Not an editing key: the dialog decides (Enter, Esc, …).
@@ -40,13 +40,13 @@ impl TextInput {
 
     /// Whether the whole pre-filled text is selected.
     #[must_use]
-    pub fn is_selected(&self) -> bool {
+    pub(crate) fn is_selected(&self) -> bool {
         self.selected
     }
 
     /// The text split at the cursor (for drawing it).
     #[must_use]
-    pub fn split_at_cursor(&self) -> (&str, &str) {
+    pub(crate) fn split_at_cursor(&self) -> (&str, &str) {
         self.text.split_at(self.byte_at(self.cursor))
     }
 
@@ -67,7 +67,7 @@ impl TextInput {
     /// Applies an editing key: characters insert at the cursor, Backspace / Delete remove,
     /// ←/→/Home/End (and ctrl+a / ctrl+e) move, ctrl+u / ctrl+k cut to the start / end,
     /// ctrl+w cuts the word before the cursor.
-    pub fn on_key(&mut self, key: KeyEvent) -> Edit {
+    pub(crate) fn on_key(&mut self, key: KeyEvent) -> Edit {
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
         let was_selected = std::mem::replace(&mut self.selected, false);
         match key.code {

@@ -28,7 +28,7 @@ impl Panel {
 
     /// Its tab title.
     #[must_use]
-    pub fn title(self) -> &'static str {
+    pub(crate) fn title(self) -> &'static str {
         match self {
             Panel::Editor => "Parameters",
             Panel::Curves => "Curves",
@@ -92,7 +92,7 @@ impl CurveView {
 
     /// Chart title with its unit.
     #[must_use]
-    pub fn title(self) -> &'static str {
+    pub(crate) fn title(self) -> &'static str {
         match self {
             CurveView::PelvisRotation => "pelvic rotation (deg)",
             CurveView::PelvisObliquity => "pelvic obliquity (deg)",

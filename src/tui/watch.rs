@@ -7,14 +7,14 @@
 //! depend on the main thread getting back to its loop:
 //!
 //! - It polls the tty for `POLLHUP` / `POLLERR` / `POLLNVAL` (events 0: it never consumes
-//!   input, which stays crossterm's) every [`POLL_MS`] ms — this catches a lost terminal with
+//!   input, which stays crossterm's) every `POLL_MS` ms — this catches a lost terminal with
 //!   no signal at all (`nohup`, a closed pty master).
 //! - It takes SIGTERM, SIGINT and SIGHUP (SIGHUP only when it was not ignored at start: a lab
 //!   under `nohup` honours that, and ends on the hang-up itself).
 //!
 //! On either, it first writes the unsaved edits to the recovery file (published by the loop
-//! through [`Watch::publish`]), then asks the loop to stop. A loop on a live terminal
-//! restores it and returns within a frame; if it has not within [`GRACE_MS`] ms, or the
+//! through `publish`), then asks the loop to stop. A loop on a live terminal
+//! restores it and returns within a frame; if it has not within `GRACE_MS` ms, or the
 //! terminal is gone, the watch restores what it can (raw mode off, the restoring bytes
 //! written straight to the descriptor, never through the stdout lock the stuck thread may
 //! hold), removes pending temps and ends the process itself.
@@ -28,9 +28,9 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// How often the tty is checked for a hang-up (ms).
-pub const POLL_MS: i32 = 100;
+pub(crate) const POLL_MS: i32 = 100;
 /// How long a live loop is given to stop by itself after a signal (ms).
-pub const GRACE_MS: u64 = 500;
+pub(crate) const GRACE_MS: u64 = 500;
 
 /// The bytes that put the terminal back: synchronized update off, main screen, cursor shown.
 const RESTORE: &[u8] = b"\x1b[?2026l\x1b[?1049l\x1b[?25h";
@@ -46,7 +46,7 @@ struct Shared {
 }
 
 /// The handle the event loop keeps.
-pub struct Watch {
+pub(crate) struct Watch {
     shared: Arc<Shared>,
 }
 
@@ -71,7 +71,7 @@ fn tty_fd() -> io::Result<(RawFd, Option<std::fs::File>)> {
 }
 
 /// Whether the lab has a terminal to run in (checked before any escape code is written).
-pub fn terminal_error() -> Option<&'static str> {
+pub(crate) fn terminal_error() -> Option<&'static str> {
     use std::io::IsTerminal;
     if !io::stdout().is_terminal() {
         return Some("standard output is not a terminal");
@@ -161,25 +161,25 @@ impl Watch {
     }
 
     /// The loop's current unsaved text (`None`: nothing unsaved), for the recovery file.
-    pub fn publish(&self, text: Option<String>) {
+    pub(crate) fn publish(&self, text: Option<String>) {
         let mut guard = self.shared.unsaved.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         guard.1 = text;
     }
 
     /// Writes the unsaved edits to the recovery file now: the loop itself found the terminal
     /// gone (crossterm returned an error rather than spinning) before the watch did.
-    pub fn keep_unsaved(&self) {
+    pub(crate) fn keep_unsaved(&self) {
         self.shared.write_recovery();
     }
 
     /// Whether the loop should stop (a signal or a lost terminal).
     #[must_use]
-    pub fn stop_requested(&self) -> bool {
+    pub(crate) fn stop_requested(&self) -> bool {
         self.shared.stop.load(Ordering::SeqCst)
     }
 
     /// The loop has stopped and restores the terminal itself: the watch stands down.
-    pub fn loop_done(&self) {
+    pub(crate) fn loop_done(&self) {
         self.shared.loop_done.store(true, Ordering::SeqCst);
     }
 }

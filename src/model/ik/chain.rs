@@ -27,9 +27,6 @@ pub struct LegAngles {
 }
 
 impl LegAngles {
-    /// Number of degrees of freedom.
-    pub const DOF: usize = 4;
-
     /// As `[hip_flex, hip_abd, hip_rot, knee_flex]`.
     #[must_use]
     pub fn to_array(self) -> [f64; 4] {
@@ -38,7 +35,7 @@ impl LegAngles {
 
     /// From `[hip_flex, hip_abd, hip_rot, knee_flex]`.
     #[must_use]
-    pub fn from_array(a: [f64; 4]) -> Self {
+    pub(crate) fn from_array(a: [f64; 4]) -> Self {
         LegAngles { hip_flex: a[0], hip_abd: a[1], hip_rot: a[2], knee_flex: a[3] }
     }
 
@@ -96,7 +93,7 @@ impl JointLimits {
 
     /// `angles` clamped into the ranges when limits are on; unchanged otherwise.
     #[must_use]
-    pub fn clamp(&self, angles: LegAngles) -> LegAngles {
+    pub(crate) fn clamp(&self, angles: LegAngles) -> LegAngles {
         if !self.enabled {
             return angles;
         }
@@ -110,7 +107,7 @@ impl JointLimits {
     /// How far the worst angle lies outside its range (rad); 0 inside. Measured whether or
     /// not limits are on, so unlimited solves can be judged against them too.
     #[must_use]
-    pub fn violation(&self, angles: LegAngles) -> f64 {
+    pub(crate) fn violation(&self, angles: LegAngles) -> f64 {
         angles
             .to_array()
             .iter()
@@ -142,13 +139,13 @@ impl IkQuestion {
 
     /// The target in the leg frame, hip at the origin.
     #[must_use]
-    pub fn local_target(&self) -> DVec3 {
+    pub(crate) fn local_target(&self) -> DVec3 {
         self.frame().inverse() * (self.target - self.hip)
     }
 
     /// A leg-frame point in the world.
     #[must_use]
-    pub fn to_world(&self, local: DVec3) -> DVec3 {
+    pub(crate) fn to_world(self, local: DVec3) -> DVec3 {
         self.hip + self.frame() * local
     }
 }
@@ -182,13 +179,13 @@ impl LegChain {
 
     /// The hip's rotation in the leg frame.
     #[must_use]
-    pub fn hip_rotation(angles: LegAngles, side_sign: f64) -> DQuat {
+    pub(crate) fn hip_rotation(angles: LegAngles, side_sign: f64) -> DQuat {
         DQuat::from_euler(EulerRot::ZXY, angles.hip_flex, -side_sign * angles.hip_abd, side_sign * angles.hip_rot)
     }
 
     /// Hip angles from the hip's rotation in the leg frame; the inverse of [`Self::hip_rotation`].
     #[must_use]
-    pub fn hip_angles(rotation: DQuat, side_sign: f64, knee_flex: f64) -> LegAngles {
+    pub(crate) fn hip_angles(rotation: DQuat, side_sign: f64, knee_flex: f64) -> LegAngles {
         let (flex, x, y) = rotation.to_euler(EulerRot::ZXY);
         LegAngles { hip_flex: flex, hip_abd: -side_sign * x, hip_rot: side_sign * y, knee_flex }
     }
@@ -205,7 +202,7 @@ impl LegChain {
 
     /// The knee's hinge axis in the leg frame for these hip angles.
     #[must_use]
-    pub fn knee_axis(angles: LegAngles, side_sign: f64) -> DVec3 {
+    pub(crate) fn knee_axis(angles: LegAngles, side_sign: f64) -> DVec3 {
         Self::hip_rotation(angles, side_sign) * DVec3::Z
     }
 
@@ -213,7 +210,7 @@ impl LegChain {
     /// [`Self::forward`] for positions with the right bone lengths. Hip rotation is undefined
     /// with the knee straight; `previous_rot` is kept then.
     #[must_use]
-    pub fn angles_from_positions(&self, pose: ChainPose, side_sign: f64, previous_rot: f64) -> LegAngles {
+    pub(crate) fn angles_from_positions(&self, pose: ChainPose, side_sign: f64, previous_rot: f64) -> LegAngles {
         let u = pose.knee.normalize_or(DVec3::NEG_Y);
         let hip_abd = (side_sign * u.z).clamp(-1.0, 1.0).asin();
         let hip_flex = u.x.atan2(-u.y);
@@ -246,7 +243,7 @@ impl LegChain {
     /// arc off the reference plane (both m). The arc, `swivel angle × knee radius`, vanishes
     /// smoothly as the knee straightens, where the swivel means nothing.
     #[must_use]
-    pub fn residual(&self, pose: ChainPose, local_target: DVec3) -> (f64, f64) {
+    pub(crate) fn residual(&self, pose: ChainPose, local_target: DVec3) -> (f64, f64) {
         let (angle, radius) = Self::swivel(pose);
         (pose.ankle.distance(local_target), angle * radius)
     }
@@ -255,7 +252,7 @@ impl LegChain {
 /// Rotates the whole chain about the hip→ankle axis so the knee lies in the reference plane:
 /// the ankle stays put, so this fixes the swivel without undoing any reaching.
 #[must_use]
-pub fn swivel_to_reference(pose: ChainPose) -> (ChainPose, DQuat) {
+pub(crate) fn swivel_to_reference(pose: ChainPose) -> (ChainPose, DQuat) {
     let (angle, radius) = LegChain::swivel(pose);
     if radius < 1e-12 || angle == 0.0 {
         return (pose, DQuat::IDENTITY);

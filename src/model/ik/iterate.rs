@@ -18,7 +18,7 @@ pub struct Iterated {
 /// with the leg stretched toward it instead of spinning to their cap. Reachable targets never
 /// stall: slow convergence there is the solver's own figure to report.
 #[derive(Clone, Copy, Debug)]
-pub struct Stall {
+pub(crate) struct Stall {
     out_of_reach: bool,
     best: f64,
     since: u32,
@@ -37,7 +37,7 @@ impl Stall {
     }
 
     /// Records this iteration's error (m); true once it has not improved for a while.
-    pub fn stalled(&mut self, error: f64) -> bool {
+    pub(crate) fn stalled(&mut self, error: f64) -> bool {
         if !self.out_of_reach {
             return false;
         }
@@ -57,11 +57,11 @@ impl Stall {
 /// A straight chain pointed at a nearer target is a fixed point of CCD and FABRIK (every
 /// joint already points at it), so they could never bend the knee out of it. 0.5° shortens
 /// the leg by under 0.01 mm, far inside any tolerance.
-pub const MIN_BEND: f64 = 0.5 * std::f64::consts::PI / 180.0;
+pub(crate) const MIN_BEND: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 /// `angles` with the knee bent at least [`MIN_BEND`] when `target` is within reach.
 #[must_use]
-pub fn unlock_knee(chain: &LegChain, angles: LegAngles, target: DVec3) -> LegAngles {
+pub(crate) fn unlock_knee(chain: &LegChain, angles: LegAngles, target: DVec3) -> LegAngles {
     if angles.knee_flex < MIN_BEND && target.length() < chain.reach() - 1e-6 {
         LegAngles { knee_flex: MIN_BEND, ..angles }
     } else {
@@ -72,7 +72,7 @@ pub fn unlock_knee(chain: &LegChain, angles: LegAngles, target: DVec3) -> LegAng
 /// Runs an iterative solver's `step` from `start` until the pose is within the tolerance,
 /// the iterations run out, or (out of reach) it stops improving. `step` gets the current
 /// angles and their pose and returns the next angles.
-pub fn iterate(
+pub(crate) fn iterate(
     chain: &LegChain,
     target: DVec3,
     side: f64,

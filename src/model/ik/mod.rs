@@ -48,7 +48,7 @@ impl Default for TwoBoneOptions {
 /// starts, concave, never reaching `reach`. (ozz writes 3 for the 4s; that curve starts with
 /// slope 4/3 and so puts the ankle past a target just beyond the softening point.)
 #[must_use]
-pub fn softened_distance(distance: f64, reach: f64, soften: f64) -> f64 {
+pub(crate) fn softened_distance(distance: f64, reach: f64, soften: f64) -> f64 {
     let da = reach * soften.clamp(0.0, 1.0);
     let ds = reach - da;
     if distance <= da || ds <= 0.0 {
@@ -75,7 +75,7 @@ pub struct TwoBoneSolution {
 /// Unit component of `k` orthogonal to the unit axis `a`; falls back to any unit vector
 /// orthogonal to `a` when `k` is (nearly) parallel to it.
 #[must_use]
-pub fn orthogonal_part(a: DVec3, k: DVec3) -> DVec3 {
+pub(crate) fn orthogonal_part(a: DVec3, k: DVec3) -> DVec3 {
     let u = k - a * a.dot(k);
     let len = u.length();
     if len > 1e-9 { u / len } else { a.any_orthonormal_vector() }
@@ -156,7 +156,8 @@ pub fn solve_two_bone_with(
 /// (A − C)/2·cos θ − B·sin θ < 0 (the maximum), with
 /// A = (a·v)(a·k) − ((a×v)×a)·k, B = (a×v)·k, C = v·k.
 #[must_use]
-pub fn thesis_swivel_angle(a: DVec3, v: DVec3, k: DVec3) -> f64 {
+#[cfg(test)]
+pub(crate) fn thesis_swivel_angle(a: DVec3, v: DVec3, k: DVec3) -> f64 {
     let av = a.dot(v);
     let ak = a.dot(k);
     let axv = a.cross(v);
@@ -170,7 +171,7 @@ pub fn thesis_swivel_angle(a: DVec3, v: DVec3, k: DVec3) -> f64 {
 
 /// Rodrigues rotation of `v` about the unit axis `a` by `theta`.
 #[must_use]
-pub fn rotate_about(v: DVec3, a: DVec3, theta: f64) -> DVec3 {
+pub(crate) fn rotate_about(v: DVec3, a: DVec3, theta: f64) -> DVec3 {
     let (s, c) = theta.sin_cos();
     v * c + a.cross(v) * s + a * a.dot(v) * (1.0 - c)
 }
@@ -179,7 +180,8 @@ pub fn rotate_about(v: DVec3, a: DVec3, theta: f64) -> DVec3 {
 /// arbitrary plane through the axis, then swivel it by [`thesis_swivel_angle`]. Kept as the
 /// reference the closed form is tested against.
 #[must_use]
-pub fn solve_two_bone_thesis(root: DVec3, target: DVec3, l1: f64, l2: f64, reference: DVec3) -> TwoBoneSolution {
+#[cfg(test)]
+pub(crate) fn solve_two_bone_thesis(root: DVec3, target: DVec3, l1: f64, l2: f64, reference: DVec3) -> TwoBoneSolution {
     let closed = solve_two_bone(root, target, l1, l2, reference);
     let d = closed.end.distance(root);
     let a = (closed.end - root) / d.max(1e-12);

@@ -28,7 +28,7 @@ impl LegSolver {
     }
 
     /// Changes the settings, keeping the previous frame's answer to start from.
-    pub fn set_settings(&mut self, settings: IkSettings) {
+    pub(crate) fn set_settings(&mut self, settings: IkSettings) {
         let warm = self.warm;
         *self = LegSolver::new(settings, self.chain.thigh, self.chain.shank, self.side_sign);
         self.warm = warm;

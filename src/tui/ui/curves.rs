@@ -12,7 +12,7 @@ use ratatui::widgets::canvas::{Canvas, Line as CLine};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph};
 
 /// One line of a chart: legend name, colour, points.
-pub type ChartLine = (String, Color, Vec<(f64, f64)>);
+pub(crate) type ChartLine = (String, Color, Vec<(f64, f64)>);
 
 /// One chart's data, in display units.
 pub struct CurveData {
@@ -128,7 +128,7 @@ fn label(x: f64) -> Span<'static> {
 }
 
 /// Draws one curve chart.
-pub fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, marker: Marker) {
+pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, marker: Marker) {
     let data = curve_data(app, view);
     let y =
         bounds(data.lines.iter().flat_map(|(_, _, p)| p.iter().map(|q| q.1)).chain(data.control.iter().map(|q| q.1)));

@@ -11,7 +11,7 @@ use ratatui::symbols::Marker;
 use ratatui::widgets::Tabs;
 
 /// Screens at least this big get every panel at once.
-pub const WIDE: (u16, u16) = (140, 40);
+pub(crate) const WIDE: (u16, u16) = (140, 40);
 
 /// Draws a panel's border with a title at the top left and, optionally, one at the bottom
 /// left — the cells `Block::bordered().title(..).title_bottom(..)` gives — and returns the

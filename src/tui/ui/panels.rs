@@ -207,7 +207,7 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
 }
 
 /// One line: file and saved state, speed, frame rate, terrain, the last message.
-pub fn draw_status(f: &mut Frame, area: Rect, app: &App) {
+pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     let saved = if app.is_modified() {
         Span::styled(
             format!(" modified ({}) ", app.changed_keys().len()),
@@ -264,7 +264,7 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 }
 
 /// Whatever overlay is open.
-pub fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
+pub(crate) fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
     let Some(overlay) = &app.overlay else { return };
     let error_line =
         |error: &Option<String>| error.as_ref().map(|e| Line::styled(e.clone(), Style::new().fg(Color::LightRed)));

@@ -10,9 +10,9 @@ use ratatui::widgets::Paragraph;
 use ratatui::widgets::canvas::{Canvas, Context, Line as CLine, Points};
 
 /// Right limbs are drawn in this colour, left in [`LEFT`].
-pub const RIGHT: Color = Color::LightRed;
+pub(crate) const RIGHT: Color = Color::LightRed;
 /// Left limbs.
-pub const LEFT: Color = Color::LightBlue;
+pub(crate) const LEFT: Color = Color::LightBlue;
 
 /// Draws the walk panel: canvas and, under it, each leg's phase and the support.
 pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
