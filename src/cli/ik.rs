@@ -1,6 +1,6 @@
 //! `gaitlab ik`: every IK solver on the walk's own targets, side by side.
 
-use super::{in_range, stdout_written};
+use super::common::{in_range, stdout_written};
 use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
 use crate::config;
 use crate::error::{Error, Result};

@@ -7,8 +7,10 @@ use crate::model::walk::Walker;
 use crate::output::{self, FileTarget, joint_table};
 use clap::{Parser, Subcommand};
 
+mod common;
 mod ik;
 mod optimise;
+use common::{Progress, in_range};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -150,51 +152,6 @@ pub enum Command {
     },
 }
 
-/// A command's stdout output ended: a reader that went away (a closed pipe, `| head`) is not
-/// a failure; any other write error is.
-fn stdout_written(written: io::Result<()>) -> Result<()> {
-    match written {
-        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(Error::Write { target: "stdout", source: e }),
-        _ => Ok(()),
-    }
-}
-
-/// A progress line on stderr for long runs, only when stderr is a terminal (scripts and
-/// pipes get nothing): rewritten in place at most twice a second, cleared at the end.
-struct Progress {
-    command: &'static str,
-    total: u64,
-    tty: bool,
-    started: std::time::Instant,
-    last: Option<std::time::Instant>,
-}
-
-impl Progress {
-    fn new(command: &'static str, total: u64) -> Self {
-        use std::io::IsTerminal;
-        Progress { command, total, tty: io::stderr().is_terminal(), started: std::time::Instant::now(), last: None }
-    }
-
-    fn at(&mut self, done: u64) {
-        // Checked every 1024 frames: the clock is not read on every row.
-        if !self.tty || !done.is_multiple_of(1024) || self.started.elapsed().as_secs_f64() < 1.0 {
-            return;
-        }
-        if self.last.is_some_and(|t| t.elapsed().as_secs_f64() < 0.5) {
-            return;
-        }
-        self.last = Some(std::time::Instant::now());
-        let pct = 100.0 * done as f64 / self.total.max(1) as f64;
-        eprint!("\rgaitlab {}: frame {done} of {} ({pct:.0} %)\x1b[K", self.command, self.total);
-    }
-
-    fn done(&self) {
-        if self.last.is_some() {
-            eprint!("\r\x1b[K");
-        }
-    }
-}
-
 /// Prints a command's error the way the interface asks: config problems one located line
 /// each, a walk's problem after its config's path, anything else after `gaitlab COMMAND:`.
 fn print_error(command: &str, e: &Error) {
@@ -213,20 +170,6 @@ fn print_error(command: &str, e: &Error) {
 /// A walker for `params`, its problems blamed on the config at `path`.
 fn walker_for(path: &Path, params: &WalkParams) -> Result<Walker> {
     Walker::new(params).map_err(|source| Error::Walk { config: path.to_path_buf(), source })
-}
-
-/// Refuses a value out of its range, naming the option and the range.
-fn in_range<T: PartialOrd + std::fmt::Display>(
-    option: &str,
-    value: T,
-    range: std::ops::RangeInclusive<T>,
-    valid: &str,
-) -> Result<T> {
-    if range.contains(&value) {
-        Ok(value)
-    } else {
-        Err(Error::Usage(format!("{option} {value} is out of range; valid: {valid}")))
-    }
 }
 
 /// Runs the parsed command line; returns the exit code (0, 1 or 2), messages printed.

@@ -1,6 +1,6 @@
 //! `gaitlab optimise`: the per-step pelvis choices of a walk, as a table or JSON lines.
 
-use super::{in_range, stdout_written};
+use super::common::{in_range, stdout_written};
 use crate::config;
 use crate::error::{Error, Result};
 use crate::model::optimise::{Candidate, StepRecord};

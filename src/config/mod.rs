@@ -8,12 +8,16 @@
 pub mod checks;
 pub mod echo;
 pub mod edit;
+pub mod errors;
 pub mod presets;
 pub mod render;
 pub mod schema;
 pub mod source;
 
 pub use checks::{check_curve, cross_check};
+use errors::char_floor;
+pub(crate) use errors::line_col;
+pub use errors::{ConfigError, ConfigErrors};
 pub use source::{MAX_CONFIG_BYTES, READ_DEADLINE, decode_source, read_source};
 
 use crate::model::gait_curves::CurveName;
@@ -21,53 +25,9 @@ use crate::model::params::WalkParams;
 use schema::{GROUPS, Kind, PARAMS, ParamSpec, Value, did_you_mean, spec};
 use std::cell::Cell;
 use std::collections::HashMap;
-use std::fmt;
 use std::path::Path;
 use toml::Spanned;
 use toml::de::{DeString, DeTable, DeValue};
-
-/// One problem in a config, at a place.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ConfigError {
-    /// The file (or `--set`) the problem is in.
-    pub path: String,
-    /// 1-based line.
-    pub line: usize,
-    /// 1-based column (characters).
-    pub col: usize,
-    /// The dotted key, or empty for a syntax error.
-    pub key: String,
-    /// What is wrong and what would be valid.
-    pub message: String,
-}
-
-impl fmt::Display for ConfigError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.key.is_empty() {
-            write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.message)
-        } else {
-            write!(f, "{}:{}:{}: {}: {}", self.path, self.line, self.col, self.key, self.message)
-        }
-    }
-}
-
-/// All problems found in one config.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ConfigErrors(pub Vec<ConfigError>);
-
-impl fmt::Display for ConfigErrors {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, e) in self.0.iter().enumerate() {
-            if i > 0 {
-                writeln!(f)?;
-            }
-            write!(f, "{e}")?;
-        }
-        Ok(())
-    }
-}
-
-impl std::error::Error for ConfigErrors {}
 
 /// A place in a source: (path label, line, column).
 type Place = (String, usize, usize);
@@ -85,24 +45,6 @@ pub(crate) struct Loader {
     errors: Vec<ConfigError>,
     /// The label of the document read, for problems no key can be blamed for.
     label: Option<String>,
-}
-
-/// `at` clamped into `text` and moved back onto a character boundary.
-fn char_floor(text: &str, at: usize) -> usize {
-    let mut at = at.min(text.len());
-    while !text.is_char_boundary(at) {
-        at -= 1;
-    }
-    at
-}
-
-/// Line and column (1-based, in characters) of byte offset `at` in `text`.
-#[must_use]
-pub(crate) fn line_col(text: &str, at: usize) -> (usize, usize) {
-    let before = &text[..char_floor(text, at)];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
 }
 
 /// [`line_col`] for many offsets of one text: line starts found once, and the column counted

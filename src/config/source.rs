@@ -13,7 +13,7 @@
 //! - the bytes must be UTF-8, a leading byte-order mark skipped; invalid UTF-8 is reported
 //!   at its line and column.
 
-use super::{ConfigError, ConfigErrors, line_col};
+use super::errors::{ConfigError, ConfigErrors, line_col};
 use std::fs::File;
 use std::io::Read;
 use std::path::{Path, PathBuf};

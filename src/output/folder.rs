@@ -5,7 +5,7 @@
 //! a report that also holds files of the user's is replaced only with `--force`; any other
 //! folder, and anything that is not a folder, is refused before the walk is run.
 
-use super::OutputError;
+use super::error::OutputError;
 use super::pending::{self, Pending};
 use super::target::{check_parents, create_parents, kind_of, missing, remove_created};
 use std::fs;

@@ -1,6 +1,6 @@
 //! Where a single output file goes, decided before any work is done.
 
-use super::OutputError;
+use super::error::OutputError;
 use super::pending::{self, Pending};
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};

@@ -31,7 +31,7 @@
 
 use crate::analysis::{self, Run};
 use crate::model::body::Side;
-use crate::model::walk::frame::{Frame, Support};
+use crate::model::walk::frame::{Frame, LegFrame, Support};
 use crate::model::walk::leg::LegPhase;
 use serde::Serialize;
 
@@ -159,9 +159,8 @@ pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
     let t1 = frames[last].time_s;
     let cycle_s = mean(strikes.windows(2).map(|w| frames[w[1]].time_s - frames[w[0]].time_s));
     let per_cycle = |f: &dyn Fn(&Frame) -> f64| mean(cycles.iter().map(|c| span(c.iter().map(f))));
-    let both = |f: &dyn Fn(&crate::model::walk::frame::LegFrame) -> f64| -> Vec<f64> {
-        steady.iter().flat_map(|fr| fr.legs.iter().map(f)).collect()
-    };
+    let both =
+        |f: &dyn Fn(&LegFrame) -> f64| -> Vec<f64> { steady.iter().flat_map(|fr| fr.legs.iter().map(f)).collect() };
     let hip = both(&|l| l.hip_flex_deg);
     let ankle = both(&|l| l.ankle_dorsi_deg);
     let knee_in = |stance: bool| {
@@ -172,27 +171,8 @@ pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
             .map(|l| l.knee_flex_deg)
             .fold(0.0, f64::max)
     };
-    let swing = |l: &&crate::model::walk::frame::LegFrame| l.leg_phase == LegPhase::Swing;
-    let min_toe = steady
-        .iter()
-        .flat_map(|fr| fr.legs.iter())
-        .filter(swing)
-        .filter(|l| (0.7..=0.9).contains(&l.phase))
-        .map(|l| (l.toe.y - l.ground_under_toe) * 100.0)
-        .fold(f64::INFINITY, f64::min);
-    let max_heel = steady
-        .iter()
-        .flat_map(|fr| fr.legs.iter())
-        .filter(swing)
-        .map(|l| (l.heel.y - l.ground_under_heel) * 100.0)
-        .fold(f64::NEG_INFINITY, f64::max);
-    // Footfalls landed in the steady window: past start-up's first two steps, and not the
-    // one still being swung to at the end.
-    let end_x = frames[last].pelvis.x;
-    let landed: Vec<_> = run.footfalls.iter().filter(|f| f.step >= 2 && f.heel.x <= end_x).collect();
-    let right: Vec<f64> = landed.iter().filter(|f| f.side == Side::Right).map(|f| f.heel.x).collect();
-    let stride = mean(right.windows(2).map(|w| w[1] - w[0]));
-    let width = mean(landed.windows(2).filter(|w| w[0].side != w[1].side).map(|w| (w[1].heel.z - w[0].heel.z).abs()));
+    let (min_toe, max_heel) = swing_clearances(steady);
+    let (stride, width) = footfall_spacing(run, frames[last].pelvis.x);
     let checks = analysis::checks(frames);
     // Steps decided inside the steady window (by the master phase of their toe-off).
     let master_at = |i: usize| frames[i].time_s / run.cycle_s;
@@ -237,4 +217,36 @@ pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
         optimiser_infeasible_steps: steps.iter().filter(|p| p.optimisation.fallback).count() as u64,
         optimiser_fixed_rule_mean_cost: mean(fixed),
     })
+}
+
+/// The swing foot's lowest toe clearance in mid-swing and highest heel clearance over the
+/// whole swing (cm) in `steady`, infinite when no leg swings there. Mid-swing only for the
+/// toe: leaving and meeting the ground, it is at zero by design.
+fn swing_clearances(steady: &[Frame]) -> (f64, f64) {
+    let swing = |l: &&LegFrame| l.leg_phase == LegPhase::Swing;
+    let min_toe = steady
+        .iter()
+        .flat_map(|fr| fr.legs.iter())
+        .filter(swing)
+        .filter(|l| (0.7..=0.9).contains(&l.phase))
+        .map(|l| (l.toe.y - l.ground_under_toe) * 100.0)
+        .fold(f64::INFINITY, f64::min);
+    let max_heel = steady
+        .iter()
+        .flat_map(|fr| fr.legs.iter())
+        .filter(swing)
+        .map(|l| (l.heel.y - l.ground_under_heel) * 100.0)
+        .fold(f64::NEG_INFINITY, f64::max);
+    (min_toe, max_heel)
+}
+
+/// Stride length and step width (m) from the footfalls landed in the steady window: past
+/// start-up's first two steps, and not the one still being swung to when the pelvis is at
+/// `end_x`.
+fn footfall_spacing(run: &Run, end_x: f64) -> (f64, f64) {
+    let landed: Vec<_> = run.footfalls.iter().filter(|f| f.step >= 2 && f.heel.x <= end_x).collect();
+    let right: Vec<f64> = landed.iter().filter(|f| f.side == Side::Right).map(|f| f.heel.x).collect();
+    let stride = mean(right.windows(2).map(|w| w[1] - w[0]));
+    let width = mean(landed.windows(2).filter(|w| w[0].side != w[1].side).map(|w| (w[1].heel.z - w[0].heel.z).abs()));
+    (stride, width)
 }

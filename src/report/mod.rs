@@ -234,16 +234,33 @@ fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
     config::edit::edited_text(input.source_text, input.params, &changed)
 }
 
+/// `summary.md`: the walk's figures (beside any compared walk's), the IK solvers on its
+/// targets, and links to the plots and tables.
 fn summary_md(
     input: &ReportInput<'_>,
     s: &Summary,
     others: &[(&str, &Summary)],
     ik_rows: &[(IkSolverKind, IkSummary)],
 ) -> String {
-    let values: Vec<serde_json::Value> = std::iter::once(s)
-        .chain(others.iter().map(|(_, o)| *o))
-        .map(|x| serde_json::to_value(x).expect("plain numbers"))
-        .collect();
+    let mut md = summary_intro(input, others);
+    figures_table(&mut md, input, s, others);
+    ik_table(&mut md, input, ik_rows);
+    md.push_str("\n## Plots\n\n");
+    for plot in plots::PLOTS {
+        let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
+    }
+    md.push_str(
+        "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \
+         [optimisation.csv](optimisation.csv) (every candidate of every step), [ik.csv](ik.csv) (every IK \
+         solve of every solver above). Definitions of the \
+         figures: `src/report/metrics.rs`.\n",
+    );
+    md
+}
+
+/// The title and the paragraph that says what was walked: the preset's description, the
+/// terrain, the speed, how long, and which walks it is compared with.
+fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)]) -> String {
     let p = input.params;
     let description =
         input.source_text.lines().next().and_then(|l| l.strip_prefix("# preset: ")).unwrap_or("custom config");
@@ -251,7 +268,7 @@ fn summary_md(
         crate::config::schema::Value::Word(w) => w.to_string(),
         _ => String::new(),
     });
-    let mut md = format!(
+    format!(
         "# gaitlab report: {}\n\n{description}; terrain: {terrain}; walk.speed_mps = {}; {} cycles at {} fps \
          (the first cycle is start-up and not measured). Config: [config.toml](config.toml).\n\n\
          {}",
@@ -267,7 +284,16 @@ fn summary_md(
                 others.iter().map(|(n, _)| format!("`{n}`")).collect::<Vec<_>>().join(", ")
             )
         }
-    );
+    )
+}
+
+/// The figures of `summary.json` as a table, one column per walk, in [`LABELS`] order;
+/// counts as integers, everything else to two decimals.
+fn figures_table(md: &mut String, input: &ReportInput<'_>, s: &Summary, others: &[(&str, &Summary)]) {
+    let values: Vec<serde_json::Value> = std::iter::once(s)
+        .chain(others.iter().map(|(_, o)| *o))
+        .map(|x| serde_json::to_value(x).expect("plain numbers"))
+        .collect();
     let names: Vec<&str> = std::iter::once(input.name.as_str()).chain(others.iter().map(|(n, _)| *n)).collect();
     let _ = writeln!(md, "| figure | {} | unit |", names.join(" | "));
     let _ = writeln!(md, "|---|{}---|", "---:|".repeat(names.len()));
@@ -284,6 +310,10 @@ fn summary_md(
             .collect();
         let _ = writeln!(md, "| {label} (`{key}`) | {} | {unit} |", cells.join(" | "));
     }
+}
+
+/// The Leg IK section: the solver the walk uses, and each solver's row on the walk's targets.
+fn ik_table(md: &mut String, input: &ReportInput<'_>, ik_rows: &[(IkSolverKind, IkSummary)]) {
     let _ = write!(
         md,
         "\n## Leg IK\n\nThe walk places its legs with `{}`. Solvers on the walk's {} IK targets \
@@ -307,17 +337,6 @@ fn summary_md(
             r.limit_violations
         );
     }
-    md.push_str("\n## Plots\n\n");
-    for plot in plots::PLOTS {
-        let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
-    }
-    md.push_str(
-        "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \
-         [optimisation.csv](optimisation.csv) (every candidate of every step), [ik.csv](ik.csv) (every IK \
-         solve of every solver above). Definitions of the \
-         figures: `src/report/metrics.rs`.\n",
-    );
-    md
 }
 
 /// The default report folder for a config: `reports/<stem>`.

@@ -1,9 +1,10 @@
 //! Choosing a leg IK solver and keeping its state between frames: [`LegSolver`] only
 //! dispatches to the solver files, which import nothing back from here.
 
+use crate::model::ik::analytic::{TwoBoneOptions, solve_two_bone_with};
 use crate::model::ik::chain::{ChainPose, IkQuestion, LegAngles, LegChain};
 use crate::model::ik::settings::{IkAnswer, IkSettings, IkSolverKind};
-use crate::model::ik::{TwoBoneOptions, ccd, fabrik, gradient, jacobian, solve_two_bone_with};
+use crate::model::ik::{ccd, fabrik, gradient, jacobian};
 use crate::model::terrain::SplitMix64;
 
 /// A leg's solver with its memory: the previous frame's angles (warm start) and, for the

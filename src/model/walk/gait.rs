@@ -11,6 +11,7 @@ use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::softened_distance;
 use crate::model::params::Resolved;
+use crate::model::terrain::Terrain;
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use crate::model::walk::pose::solve_leg;
@@ -20,6 +21,10 @@ use glam::{DQuat, DVec3};
 pub const HEEL_RISE_DESIGN_STRIDE_M: f64 = 1.8;
 /// Steepest heel rise the stance leg may take to reach (rad).
 pub const MAX_HEEL_RISE: f64 = 1.45;
+/// Toe-off plantarflexion the swing-ankle curve is designed for (deg) [fig 6.8].
+pub const SWING_ANKLE_DESIGN_DEG: f64 = 15.0;
+/// Least foot–ground angle at heel strike (rad): the heel, not the toe, lands first.
+pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 
 /// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
 /// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
@@ -34,6 +39,50 @@ pub(crate) struct LiveCurves {
     pub(crate) lateral: LiveCurve,
     pub(crate) shoulder: [LiveCurve; 2],
     pub(crate) elbow: [LiveCurve; 2],
+}
+
+impl LiveCurves {
+    /// Plays `targets` (in [`cycle_targets`] order) from the start, unchanged.
+    pub(crate) fn new(targets: [Curve; 6]) -> Self {
+        let [obliquity, rotation, tilt, lateral, shoulder, elbow] = targets;
+        LiveCurves {
+            obliquity: LiveCurve::new(obliquity),
+            rotation: LiveCurve::new(rotation),
+            tilt: LiveCurve::new(tilt),
+            lateral: LiveCurve::new(lateral),
+            shoulder: [LiveCurve::new(shoulder.clone()), LiveCurve::new(shoulder)],
+            elbow: [LiveCurve::new(elbow.clone()), LiveCurve::new(elbow)],
+        }
+    }
+
+    /// Starts changing every curve toward `targets` (in [`cycle_targets`] order) from where
+    /// it is now: the pelvis and the right arm are at `p_right` of their cycle, the left arm
+    /// at `p_left` (it runs half a cycle behind), so each curve bends from its own present.
+    pub(crate) fn change_to(&mut self, targets: [Curve; 6], p_right: f64, p_left: f64) {
+        let [obliquity, rotation, tilt, lateral, shoulder, elbow] = targets;
+        self.obliquity.change_to(obliquity, p_right);
+        self.rotation.change_to(rotation, p_right);
+        self.tilt.change_to(tilt, p_right);
+        self.lateral.change_to(lateral, p_right);
+        self.shoulder[0].change_to(shoulder.clone(), p_right);
+        self.shoulder[1].change_to(shoulder, p_left);
+        self.elbow[0].change_to(elbow.clone(), p_right);
+        self.elbow[1].change_to(elbow, p_left);
+    }
+
+    /// Ends the cycle of the curves that `side`'s cycle times: its arm's, and with the right
+    /// leg's (the master phase) the pelvis's. A change under way finishes only here, at a
+    /// cycle's end, where the played curve meets its target without a jump.
+    pub(crate) fn wrap(&mut self, side: Side) {
+        let i = side.index();
+        self.shoulder[i].wrap();
+        self.elbow[i].wrap();
+        if side == Side::Right {
+            for c in [&mut self.obliquity, &mut self.rotation, &mut self.tilt, &mut self.lateral] {
+                c.wrap();
+            }
+        }
+    }
 }
 
 /// Real-unit cycle curves for a parameter set.
@@ -196,6 +245,25 @@ impl AsRef<Gait> for Gait {
     }
 }
 
+/// The footfall of step `step` on `side`, meant for `nominal_x` on unbroken ground and
+/// settled on the terrain (on stairs, onto one tread), with the ground's height and slope
+/// there. The start of the walk and every step's planning place their feet here, so the two
+/// can never disagree on where a foot stands.
+#[must_use]
+pub fn place_footfall(terrain: &Terrain, r: &Resolved, step: i64, side: Side, nominal_x: f64) -> Footfall {
+    let yaw = -side.sign() * r.turnout;
+    let foot_x = r.dims.foot_length * yaw.cos();
+    let x = terrain.settle_footfall(nominal_x, foot_x, r.clearance);
+    Footfall {
+        step,
+        side,
+        heel: DVec3::new(x, terrain.height(x), side.sign() * 0.5 * r.step_width_m),
+        ground_angle: terrain.angle_between(x, x + foot_x),
+        yaw,
+        nominal_x,
+    }
+}
+
 /// Moves a stance leg into its next stance phase, given its pose at the boundary: midstance
 /// holds the ankle where loading response left it; heel rise holds the toe joint of the flat
 /// foot and freezes the heel-rise curve's stride scale.
@@ -220,6 +288,9 @@ pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Re
 /// line toward the hip line and back, up on the heel-height curve; foot pitched by the ankle
 /// curve; toes back to neutral over the first fifth of the swing.
 #[must_use]
+// Run in the planner's swing simulation and reach guard, hundreds of times a step; with the
+// planner in its own file (another codegen unit) it is only inlined there when marked.
+#[inline]
 pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTarget {
     let from = plan.heel_from;
     let to = plan.to.heel;

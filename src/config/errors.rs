@@ -1,0 +1,65 @@
+//! A config's problems, each at its place (file or `--set`, line, column, key), and the
+//! line/column of a byte offset that places them.
+
+use std::fmt;
+
+/// One problem in a config, at a place.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConfigError {
+    /// The file (or `--set`) the problem is in.
+    pub path: String,
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column (characters).
+    pub col: usize,
+    /// The dotted key, or empty for a syntax error.
+    pub key: String,
+    /// What is wrong and what would be valid.
+    pub message: String,
+}
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.key.is_empty() {
+            write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.message)
+        } else {
+            write!(f, "{}:{}:{}: {}: {}", self.path, self.line, self.col, self.key, self.message)
+        }
+    }
+}
+
+/// All problems found in one config.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConfigErrors(pub Vec<ConfigError>);
+
+impl fmt::Display for ConfigErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, e) in self.0.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{e}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ConfigErrors {}
+
+/// `at` clamped into `text` and moved back onto a character boundary.
+pub(crate) fn char_floor(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
+}
+
+/// Line and column (1-based, in characters) of byte offset `at` in `text`.
+#[must_use]
+pub(crate) fn line_col(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..char_floor(text, at)];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}

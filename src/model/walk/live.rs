@@ -1,0 +1,67 @@
+//! Changes during the walk: new parameters applied without a jump, each part at the moment
+//! it can change unseen — the cycle curves bend from where they are playing and settle at a
+//! cycle's end, the trajectory curves wait for the next pelvis key, and everything planned per
+//! step takes the new values from the next toe-off.
+
+use crate::model::gait_curves::CurveSet;
+use crate::model::params::WalkParams;
+use crate::model::walk::gait::{cycle_targets, trajectory_curves};
+use crate::model::walk::leg::LegPhase;
+use crate::model::walk::upper::ArmHang;
+use crate::model::walk::{ModelError, Walker};
+
+impl Walker {
+    /// Applies new parameters during the walk without a jump: cycle curves change from the
+    /// segment after the one playing, trajectory curves at the next pelvis key, everything
+    /// planned per step (footfalls, swing, pelvis keys) from the next toe-off. Body and
+    /// terrain cannot change under a walking body: returns false, and the caller restarts.
+    pub fn set_params(&mut self, params: &WalkParams) -> Result<bool, ModelError> {
+        if params.body != self.params.body || params.terrain != self.params.terrain {
+            return Ok(false);
+        }
+        let r = params.resolve();
+        let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+        let p_right = self.phase.rem_euclid(1.0);
+        let p_left = (self.phase - 0.5).rem_euclid(1.0);
+        self.gait.live.change_to(cycle_targets(&design, &r), p_right, p_left);
+        let traj = trajectory_curves(&design);
+        if traj.forward_ds_ms != self.gait.traj.forward_ds_ms
+            || traj.forward_ms_ds != self.gait.traj.forward_ms_ds
+            || traj.vertical != self.gait.traj.vertical
+        {
+            self.pending_traj = Some(traj);
+        }
+        // Phase boundaries must not jump behind a leg that is inside the phase they end.
+        let mut r = r;
+        for leg in &self.legs {
+            let q = self.phase - leg.cycle_start;
+            match leg.phase {
+                LegPhase::LoadingResponse => r.foot_flat = r.foot_flat.max(q),
+                LegPhase::Midstance => r.heel_rise = r.heel_rise.max(q),
+                LegPhase::HeelRise => {
+                    r.toe_off = r.toe_off.max(q);
+                    r.heel_rise = self.gait.r.heel_rise;
+                }
+                LegPhase::Swing => r.toe_off = self.gait.r.toe_off,
+            }
+        }
+        self.arm_hang = ArmHang::new(&r.dims, r.arm_spread, r.elbow_min_flex);
+        if r.ik != self.gait.r.ik {
+            for solver in &mut self.leg_solvers {
+                solver.set_settings(r.ik);
+            }
+        }
+        self.gait.design = design;
+        self.gait.r = r;
+        self.params = params.clone();
+        Ok(true)
+    }
+
+    /// Swaps in edited trajectory curves when the pelvis passes a key, so the segment being
+    /// played never changes shape under it.
+    pub(super) fn cross_key_boundaries(&mut self, to: f64) {
+        if self.pending_traj.is_some() && self.plan.keys().any(|k| k.phase > self.phase && k.phase <= to) {
+            self.gait.traj = self.pending_traj.take().expect("checked");
+        }
+    }
+}

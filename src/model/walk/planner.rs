@@ -1,0 +1,473 @@
+//! The step planner (spec §6.3.2, §8): at each toe-off, where the swinging foot will land,
+//! the pelvis keys up to its mid-stance (their double-support position chosen by the
+//! optimiser), and the swing that gets the foot there; plus the keys the walk starts from.
+//!
+//! Its own file because it is the walk's one decision per step, run once a step, while the
+//! rest of [`Walker`] runs every frame. It writes the walker's plan, legs and records, so it
+//! is an `impl Walker` block; the clock in `mod.rs` reaches it only by method calls
+//! (`self.plan_start()`, `self.plan_step(..)`), never by path, so no import runs back here.
+
+use crate::model::body::Side;
+use crate::model::curve::Curve;
+use crate::model::gait_curves::CurveName;
+use crate::model::optimise::{Candidate, StepProblem, StepRecord};
+use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall, swing_target};
+use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
+use crate::model::walk::pelvis::{KeyKind, PelvisKey};
+use crate::model::walk::pose::solve_leg;
+use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, SWING_SAMPLES, StepPlan, Walker};
+
+impl Walker {
+    /// The pelvis keys the walk starts from, around the standing start: the left mid-stance
+    /// behind, this double support, the right mid-stance ahead — lowered where the right leg
+    /// could not reach its stance.
+    pub(super) fn plan_start(&mut self) {
+        let [right, left] = [self.legs[0].footfall, self.legs[1].footfall];
+        let ms_left = self.midstance_key(&left, -0.5);
+        self.plan.push(ms_left);
+        self.push_step_keys(&left, &right, 0.0);
+        self.guard_stance_reach(Side::Right, 0.0, None);
+    }
+
+    /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
+    /// swing [6.3.2].
+    pub(super) fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
+        let i = side.index();
+        let other = self.legs[side.other().index()].footfall;
+        // Footfall: a step on from the previous footfall's nominal place, settled on the ground.
+        let nominal_x = other.nominal_x + 0.5 * self.gait.r.stride_m;
+        let to = place_footfall(&self.terrain, &self.gait.r, other.step + 1, side, nominal_x);
+        let strike_phase = self.legs[i].cycle_start + 1.0;
+        // Swing planning step 1: the foot pitch curve.
+        let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose.target.pitch, &to);
+        // Pelvis keys: the coming double support (its position chosen below), then this leg's
+        // mid-stance.
+        let ms_before = self.push_step_keys(&other, &to, strike_phase);
+        let landing = LegState {
+            side,
+            phase: LegPhase::LoadingResponse,
+            cycle_start: strike_phase,
+            footfall: to,
+            anchor: to.heel,
+            strike_angle,
+            heel_rise_scale: self.legs[i].heel_rise_scale,
+            swing: None,
+            phase_serial: 0,
+            pose: *toe_off_pose,
+        };
+        // Step 2: the heel-height curve.
+        let ground_from = self.legs[i].footfall.heel.y;
+        let mut plan = SwingPlan {
+            heel_from: toe_off_pose.heel,
+            ground_from,
+            to,
+            pitch_from: toe_off_pose.target.pitch,
+            toe_bend_from: toe_off_pose.target.toe_bend,
+            forward: self.gait.design.get(CurveName::SwingForward).clone(),
+            lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
+            ankle_deg,
+            heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to),
+            raises: 0,
+        };
+        // The end of the swing and the stance phases this plan sets up must reach: lower the
+        // pelvis where they would not.
+        // The guard runs twice: first with the double support at the fixed rule, so that the
+        // optimiser searches around keys the legs can follow (the mid-stance key in
+        // particular, which no candidate moves), then for the chosen position.
+        let mut guard_drop = self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
+        let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
+        let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
+        let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
+        if (record.chosen.x, record.chosen.y) != (ds.x, ds.y) {
+            guard_drop += self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
+        }
+        // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
+        // foot would touch the ground.
+        self.simulate_swing(side, at, &mut plan);
+        self.step_plans.push(StepPlan {
+            step: to.step,
+            side,
+            phase: at,
+            optimisation: record,
+            double_support_y: self.plan.last_of(KeyKind::DoubleSupport).map_or(ds.y, |k| k.y),
+            reach_guard_drop: guard_drop,
+            swing_raises: plan.raises,
+            swing_heel_height: plan.heel_height.clone(),
+            swing_ankle_deg: plan.ankle_deg.clone(),
+        });
+        self.footfalls.push(to);
+        self.legs[i].swing = Some(plan);
+    }
+
+    /// The step's foot-pitch curve and the foot–ground angle it strikes `to` at: the design
+    /// curve scaled to the toe-off plantarflexion (`pitch_from`), since a foot that leaves
+    /// steeper swings through steeper; its end turned up where the footfall slopes up, so the
+    /// heel, not the toe, lands first.
+    fn adapt_swing_ankle(&self, pitch_from: f64, to: &Footfall) -> (Curve, f64) {
+        let mut ankle_deg = self.gait.design.get(CurveName::SwingAnkle).clone();
+        let toe_off_plantar_deg = (-pitch_from).to_degrees().max(0.0);
+        ankle_deg.scale(1.0, (toe_off_plantar_deg / SWING_ANKLE_DESIGN_DEG).min(6.0));
+        let strike = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+        if strike < MIN_STRIKE_ANGLE {
+            ankle_deg.shift_last_two((MIN_STRIKE_ANGLE - strike).to_degrees());
+        }
+        let strike_angle = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+        (ankle_deg, strike_angle)
+    }
+
+    /// The step's heel-height curve (m above `ground_from`, the toe-off ground): the design
+    /// curve scaled to the heel's height at toe-off (`heel_from_y`), its end moved by the
+    /// terrain step to `to`, its middle raised by the knee-lift parameter. The swing
+    /// simulation raises it further where it must.
+    fn adapt_swing_heel(&self, heel_from_y: f64, ground_from: f64, to: &Footfall) -> Curve {
+        let mut heel_height = self.gait.design.get(CurveName::SwingHeelHeight).clone();
+        heel_height.scale(1.0, ((heel_from_y - ground_from) / SWING_HEEL_DESIGN_M).max(0.05));
+        heel_height.shift_end(to.heel.y - ground_from - heel_height.eval(1.0));
+        if self.gait.r.knee_lift > 0.0 {
+            heel_height.raise_at(0.5, self.gait.r.knee_lift);
+        }
+        // The heel must come down onto the footfall, never up into it: a big step up tilts
+        // the shifted curve's end upward, so the last handle is set back to a descent.
+        heel_height.limit_end_slope(LANDING_SLOPE_M);
+        heel_height
+    }
+
+    /// Pushes the keys of the step onto `leading` (striking at `strike_phase`, `trailing`
+    /// behind): its double support, at the fixed rule until the optimiser moves it, and its
+    /// mid-stance, at that double support's pace. Returns the mid-stance key before them.
+    fn push_step_keys(&mut self, trailing: &Footfall, leading: &Footfall, strike_phase: f64) -> PelvisKey {
+        let ms_before = *self.plan.last_of(KeyKind::MidStance).expect("a mid-stance key is planned");
+        let ms_after = self.midstance_key(leading, strike_phase);
+        let ds = self.double_support_key(trailing, leading, strike_phase, &ms_before, &ms_after);
+        self.plan.push(ds);
+        self.plan.push(PelvisKey { pace: ds.pace, ..ms_after });
+        ms_before
+    }
+
+    /// The reach guard for the stance `side` is about to land in on `to`: the leg still
+    /// stands on its old footfall until heel strike, so its state is lent the new footfall
+    /// and strike angle for the guard's questions, then given back. Returns the guard's drop.
+    fn guard_landing_reach(
+        &mut self,
+        side: Side,
+        to: Footfall,
+        strike_angle: f64,
+        strike_phase: f64,
+        plan: &SwingPlan,
+    ) -> f64 {
+        let i = side.index();
+        let saved_footfall = self.legs[i].footfall;
+        let saved_strike = self.legs[i].strike_angle;
+        self.legs[i].footfall = to;
+        self.legs[i].strike_angle = strike_angle;
+        let drop = self.guard_stance_reach(side, strike_phase, Some(plan));
+        self.legs[i].footfall = saved_footfall;
+        self.legs[i].strike_angle = saved_strike;
+        drop
+    }
+
+    /// The pelvis key at mid-stance over `footfall`, whose heel strike is at master phase
+    /// `strike_phase`: ahead of the heel by the offset parameter, at the mid-stance height
+    /// above the ground under the foot (so the stance knee's extension is the same on any
+    /// terrain, [6.3.3, fig 6.14]).
+    fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
+        let r = &self.gait.r;
+        PelvisKey {
+            phase: strike_phase + 0.5 * r.toe_off,
+            x: footfall.heel.x + r.midstance_offset,
+            y: footfall.heel.y + r.dims.standing_hip_height() - r.midstance_drop,
+            kind: KeyKind::MidStance,
+            pace: r.stride_m,
+        }
+    }
+
+    /// The pelvis key at mid double support after `leading` strikes at `strike_phase`, with
+    /// `trailing` behind. Height: the vertical range below the mid-stance height over the
+    /// *lower* of the two footfalls — stepping down lowers the minimum so the leading leg
+    /// reaches, stepping up keeps it and the knee bends [fig 6.14].
+    fn double_support_key(
+        &self,
+        trailing: &Footfall,
+        leading: &Footfall,
+        strike_phase: f64,
+        ms_before: &PelvisKey,
+        ms_after: &PelvisKey,
+    ) -> PelvisKey {
+        let r = &self.gait.r;
+        let ground = trailing.heel.y.min(leading.heel.y);
+        PelvisKey {
+            phase: strike_phase + 0.5 * (r.toe_off - 0.5),
+            x: 0.5 * (ms_before.x + ms_after.x),
+            y: ground + r.dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
+            kind: KeyKind::DoubleSupport,
+            // This step's own average pace, so a change of speed or a stair spreads over the
+            // steps it happens in instead of being caught up within one segment.
+            pace: (ms_after.x - ms_before.x) / (ms_after.phase - ms_before.phase),
+        }
+    }
+
+    /// Where the pelvis is at the coming mid double support: the one choice per step that
+    /// the pelvis-acceleration optimisation (spec §8) makes, written into the plan's newest
+    /// double-support key. With the optimiser off, the fixed rule: halfway between the
+    /// mid-stance positions around it. When no candidate is feasible the previous step's
+    /// choice (as a share of the distance between the mid-stances) is kept and counted; the
+    /// reach guard that runs next lowers the pelvis until the legs reach.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn choose_double_support(
+        &mut self,
+        side: Side,
+        at: f64,
+        step: i64,
+        landing: LegState,
+        ms_before: PelvisKey,
+        ds: PelvisKey,
+        ms_after: PelvisKey,
+    ) -> StepRecord {
+        let started = self.clock.map(|now| now());
+        let settings = self.params.optimiser.clone();
+        let half_range = 0.5 * settings.range_pct / 100.0 * (ms_after.x - ms_before.x);
+        let centre = 0.5 * (ms_before.x + ms_after.x);
+        let problem = StepProblem {
+            plan: self.plan.clone(),
+            stance: self.legs[side.other().index()].clone(),
+            landing,
+            ms_before,
+            ds,
+            ms_after,
+            range: (centre - half_range, centre + half_range),
+            height_range: (ds.y - 0.03, ds.y + 0.01),
+            settings,
+            heel_rise_allowance: f64::INFINITY,
+            hip_extension_allowance: f64::INFINITY,
+            fixed_rule_cost: None,
+            orientations: Vec::new(),
+        };
+        // With the optimiser off nothing needs a cost but the comparison, which callers that
+        // only want the walk (or want to time the swing planning alone) can switch off.
+        let problem =
+            if problem.settings.enabled || self.cost_fixed_rule { problem.with_allowance(self) } else { problem };
+        let fixed_x = problem.fixed_rule_x();
+        let fixed_rule = Candidate { x: fixed_x, y: ds.y, cost: problem.fixed_rule_cost };
+        let (method, candidates) = if problem.settings.enabled {
+            (Some(problem.settings.method), problem.search(self))
+        } else {
+            (None, vec![fixed_rule])
+        };
+        // Off, the fixed rule is the choice whatever its cost (or whether it was costed at
+        // all); the reach guard after the choice keeps the legs able to reach.
+        let best = if method.is_none() {
+            Some(fixed_rule)
+        } else {
+            candidates
+                .iter()
+                .filter(|c| c.cost.is_some())
+                .min_by(|a, b| a.cost.unwrap().total_cmp(&b.cost.unwrap()))
+                .copied()
+        };
+        let fallback = best.is_none();
+        let chosen = best.unwrap_or_else(|| {
+            self.infeasible_steps += 1;
+            let x = ms_before.x + self.last_ds_ratio * (ms_after.x - ms_before.x);
+            Candidate { x, y: ds.y, cost: problem.cost(self, x, ds.y) }
+        });
+        let elapsed_us = started.map_or(0.0, |t| t.elapsed().as_secs_f64() * 1e6);
+        if let Some(key) = self.plan.last_of_mut(KeyKind::DoubleSupport) {
+            key.x = chosen.x;
+            key.y = chosen.y;
+        }
+        self.last_ds_ratio = (chosen.x - ms_before.x) / (ms_after.x - ms_before.x);
+        let record = StepRecord {
+            step,
+            side,
+            phase: at,
+            method,
+            evaluations: if method.is_some() { candidates.len() as u32 } else { 0 },
+            feasible: candidates.iter().filter(|c| c.cost.is_some()).count() as u32,
+            candidates,
+            chosen,
+            window_x: (ms_before.x, ms_after.x),
+            fixed_rule,
+            fallback,
+            elapsed_us,
+        };
+        self.last_problem = Some(problem);
+        record
+    }
+
+    /// Lowers the newest pelvis keys where `side`'s leg, striking at `strike_phase`, could not
+    /// reach its ground contact during loading response and midstance. The terrain rule
+    /// keeps the knee's extension, but a long stride or a big drop can still put the heel out
+    /// of reach; the planner drops the pelvis rather than let the heel slide. Returns the
+    /// drop of the double-support key (m).
+    fn guard_stance_reach(&mut self, side: Side, strike_phase: f64, swing: Option<&SwingPlan>) -> f64 {
+        let r = self.gait.r.clone();
+        let limit = r.reach_margin * r.dims.leg_reach();
+        let footfall = self.legs[side.index()].footfall;
+        let strike_angle = self.legs[side.index()].strike_angle;
+        // Only the two newest keys may move: the segment ending at any older key may be
+        // playing already, and moving its key would make the pelvis jump.
+        let ds_phase = self.plan.last_of(KeyKind::DoubleSupport).map_or(f64::NAN, |k| k.phase);
+        let ms_phase = self.plan.last_of(KeyKind::MidStance).map_or(f64::NAN, |k| k.phase);
+        // From the end of the swing (when a plan is given: the knee is nearly straight there
+        // too) through loading response and midstance.
+        // Samples are densest around heel strike, where the leg is straightest.
+        let mut samples: Vec<f64> = Vec::with_capacity(24);
+        if swing.is_some() {
+            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
+        }
+        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
+        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        samples.extend(
+            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
+        );
+        let mut dropped = 0.0;
+        for _ in 0..6 {
+            let mut worst: Option<(f64, KeyKind)> = None;
+            for &phase in &samples {
+                let ankle = match swing {
+                    Some(plan) if phase < strike_phase => {
+                        let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
+                        swing_target(plan, s, side, &r).ankle
+                    }
+                    _ => {
+                        let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
+                        let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
+                        footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
+                    }
+                };
+                let hip = self.pelvis_at(phase).hip(side.sign());
+                let d = hip - ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                let allowed = if horizontal < limit {
+                    ankle.y + (limit * limit - horizontal * horizontal).sqrt()
+                } else {
+                    ankle.y
+                };
+                let deficit = hip.y - allowed;
+                if deficit <= 0.0 {
+                    continue;
+                }
+                // Lower whichever movable key moves the pelvis most at this instant.
+                let (a, b, u) = self.plan.bracket(phase);
+                let v = self.gait.traj.vertical.eval(u);
+                let mut choice: Option<(KeyKind, f64)> = None;
+                for (key, weight) in [(a, 1.0 - v), (b, v)] {
+                    let movable = key.phase == ds_phase || key.phase == ms_phase;
+                    if movable && choice.is_none_or(|(_, w)| weight > w) {
+                        choice = Some((key.kind, weight));
+                    }
+                }
+                let Some((kind, weight)) = choice else { continue };
+                let need = deficit / weight.max(0.25) + 1e-4;
+                if worst.is_none_or(|(w, _)| need > w) {
+                    worst = Some((need, kind));
+                }
+            }
+            let Some((need, kind)) = worst else { break };
+            if let Some(key) = self.plan.last_of_mut(kind) {
+                key.y -= need;
+                if kind == KeyKind::DoubleSupport {
+                    dropped += need;
+                }
+            }
+        }
+        dropped
+    }
+
+    /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
+    /// the plan, IK; raise the heel-height curve where the ankle is beyond reach, then where
+    /// heel, toe tip or sole would come within the clearance of the ground. Up to eight passes;
+    /// the foot's first 8 % are left alone, as its toe is on the ground at toe-off by design.
+    fn simulate_swing(&self, side: Side, toe_off_phase: f64, plan: &mut SwingPlan) {
+        let r = &self.gait.r;
+        let dims = &r.dims;
+        let limit = r.reach_margin * dims.leg_reach();
+        let span = 1.0 - r.toe_off;
+        for _pass in 0..8 {
+            let mut raised = false;
+            let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
+            for i in 0..SWING_SAMPLES {
+                let s = (i as f64 + 0.5) / SWING_SAMPLES as f64;
+                let pelvis = self.pelvis_at(toe_off_phase + s * span);
+                let hip = pelvis.hip(side.sign());
+                let target = swing_target(plan, s, side, r);
+                // Out of reach: lift the heel until the ankle is back inside the sphere.
+                let d = hip - target.ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                if horizontal < limit {
+                    let lowest_ok = hip.y - (limit * limit - horizontal * horizontal).sqrt();
+                    if target.ankle.y < lowest_ok - 1e-6 && s < 0.97 {
+                        plan.heel_height.raise_at(s, lowest_ok - target.ankle.y + 1e-4);
+                        plan.raises += 1;
+                        raised = true;
+                        continue;
+                    }
+                }
+                // Too close to the ground: clearance ramps in over the first and out over the
+                // last 15 % of the swing, where the foot leaves and meets the ground.
+                let pose = solve_leg(r, hip, target);
+                let needed = r.clearance * (s / 0.15).min((1.0 - s) / 0.15).min(1.0);
+                let ground_heel = self.terrain.height(pose.heel.x);
+                let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
+                prev_toe_x = pose.toe_tip.x;
+                let mut deficit = (ground_heel + needed - pose.heel.y).max(ground_toe + needed - pose.toe_tip.y);
+                for corner in self.terrain.corners_between(pose.heel.x, pose.toe_tip.x) {
+                    let top = self.terrain.height(corner).max(self.terrain.height(corner - 1e-9));
+                    let f = (corner - pose.heel.x) / (pose.toe_tip.x - pose.heel.x).max(1e-9);
+                    let sole_y = pose.heel.y + (pose.toe_tip.y - pose.heel.y) * f;
+                    deficit = deficit.max(top + needed - sole_y);
+                }
+                if deficit > 1e-5 && s > 0.08 && s < 0.985 {
+                    plan.heel_height.raise_at(s, deficit + 1e-4);
+                    plan.raises += 1;
+                    raised = true;
+                }
+            }
+            if !raised {
+                break;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::config::presets;
+    use crate::model::walk::Walker;
+    use crate::model::walk::pelvis::KeyKind;
+
+    #[test]
+    fn a_step_with_no_feasible_candidate_keeps_the_previous_ratio_and_is_counted() {
+        let params = presets::params("default").unwrap().unwrap();
+        let mut walker = Walker::new(&params).unwrap();
+        while walker.step_plans().len() < 4 {
+            walker.advance(1.0 / 60.0);
+        }
+        let problem = walker.last_step_problem().unwrap().clone();
+        let previous_ratio = walker.last_ds_ratio;
+        // The same question, but the landing foot a metre further on: out of every
+        // candidate's reach at heel strike.
+        let mut landing = problem.landing.clone();
+        landing.footfall.heel.x += 1.0;
+        landing.anchor.x += 1.0;
+        let before = walker.infeasible_steps();
+        let record = walker.choose_double_support(
+            landing.side,
+            problem.ds.phase,
+            99,
+            landing,
+            problem.ms_before,
+            problem.ds,
+            problem.ms_after,
+        );
+        assert!(record.fallback);
+        assert_eq!(record.feasible, 0);
+        assert!(record.evaluations >= 5);
+        assert_eq!(walker.infeasible_steps(), before + 1);
+        assert!((record.chosen_ratio() - previous_ratio).abs() < 1e-12);
+        assert!(record.chosen.x.is_finite() && record.chosen.y.is_finite());
+        assert!(record.chosen.cost.is_none_or(f64::is_finite));
+        let key = walker.plan.last_of(KeyKind::DoubleSupport).unwrap();
+        assert_eq!((key.x, key.y), (record.chosen.x, record.chosen.y));
+    }
+}

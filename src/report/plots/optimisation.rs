@@ -1,0 +1,181 @@
+//! The pelvis-acceleration optimisation: one step's cost landscape, and every step's chosen
+//! position and cost against the fixed rule's.
+
+use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, err, y_range};
+use super::data::Data;
+use crate::model::optimise::{Candidate, StepProblem};
+use crate::model::walk::{Gait, StepPlan};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The landscape of the middle step (left half), the chosen position per step (top right)
+/// and the cost per step (bottom right).
+pub(super) fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
+    root.fill(&WHITE).map_err(err)?;
+    let root = root.titled("Pelvis-acceleration optimisation", (FONT, 34)).map_err(err)?;
+    let (left, right) = root.split_horizontally(SIZE.0 / 2);
+    let plans = &d.run.step_plans;
+    // A representative step: the middle one; its landscape by re-walking to it.
+    let target = plans.len() / 2;
+    let recorded = d.run.step_problems.get(target).and_then(Option::as_ref);
+    if let (Some((problem, gait)), Some(plan)) = (recorded, plans.get(target)) {
+        landscape(&left, problem, gait, plan)?;
+    }
+    let (top, bottom) = right.split_vertically(SIZE.1 / 2 - 30);
+    let steps: Vec<f64> = plans.iter().map(|p| p.step as f64).collect();
+    let smax = steps.iter().copied().fold(1.0, f64::max);
+    chosen_per_step(&top, plans, smax)?;
+    cost_per_step(&bottom, plans, smax)?;
+    root.present().map_err(err)
+}
+
+/// The cost of candidate double-support positions across the step's search range, the
+/// unreachable ones marked at the bottom, and the position chosen.
+fn landscape<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    problem: &StepProblem,
+    gait: &Gait,
+    plan: &StepPlan,
+) -> Res {
+    let (lo, hi) = problem.range;
+    let (x_from, x_to, land) = zoom_to_feasible(problem, gait);
+    let feasible: Vec<(f64, f64)> = land.iter().filter_map(|c| c.cost.map(|k| ((c.x - lo) * 100.0, k))).collect();
+    let x_axis = (x_from - lo) * 100.0..((x_to - lo) * 100.0).max((x_from - lo) * 100.0 + 1e-6);
+    let y = y_range(&[feasible.as_slice()]);
+    let zoomed = if (x_from, x_to) == (lo, hi) { String::new() } else { " (feasible band)".to_string() };
+    let mut chart = ChartBuilder::on(area)
+        .caption(format!("cost landscape, step {}{zoomed}", plan.step), (FONT, 30))
+        .margin(12)
+        .x_label_area_size(55)
+        .y_label_area_size(90)
+        .build_cartesian_2d(x_axis, y.clone())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("pelvis x at double support, from range start (cm)")
+        .y_desc("cost (rad^2/s^3)")
+        .label_style((FONT, 20))
+        .axis_desc_style((FONT, 22))
+        .draw()
+        .map_err(err)?;
+    chart
+        .draw_series(feasible.iter().map(|p| Circle::new(*p, 4, RIGHT.filled())))
+        .map_err(err)?
+        .label("feasible candidate")
+        .legend(|(x, y)| Circle::new((x + 10, y), 4, RIGHT.filled()));
+    let unreachable: Vec<(f64, f64)> =
+        land.iter().filter(|c| c.cost.is_none()).map(|c| ((c.x - lo) * 100.0, y.start)).collect();
+    chart
+        .draw_series(unreachable.iter().map(|p| Cross::new(*p, 5, BLACK.stroke_width(2))))
+        .map_err(err)?
+        .label("unreachable")
+        .legend(|(x, y)| Cross::new((x + 10, y), 5, BLACK.stroke_width(2)));
+    if let Some(cost) = plan.optimisation.chosen.cost {
+        chart
+            .draw_series(std::iter::once(TriangleMarker::new(
+                ((plan.optimisation.chosen.x - lo) * 100.0, cost),
+                12,
+                LEFT.filled(),
+            )))
+            .map_err(err)?
+            .label("chosen")
+            .legend(|(x, y)| TriangleMarker::new((x + 10, y), 8, LEFT.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .label_font((FONT, 20))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+/// The landscape's x range and candidates: 81 across the whole search range, but where the
+/// feasible band is a few centimetres of a range tens of centimetres wide, the band (with
+/// one unreachable sample each side) at 41 points, so the valley the search works in is
+/// visible.
+fn zoom_to_feasible(problem: &StepProblem, gait: &Gait) -> (f64, f64, Vec<Candidate>) {
+    let mut land = problem.landscape(gait, 81);
+    let (lo, hi) = problem.range;
+    let (mut x_from, mut x_to) = (lo, hi);
+    let feasible_x: Vec<f64> = land.iter().filter(|c| c.cost.is_some()).map(|c| c.x).collect();
+    if let (Some(&first), Some(&last)) = (feasible_x.first(), feasible_x.last()) {
+        let step = (hi - lo) / 80.0;
+        if last - first < 0.25 * (hi - lo) {
+            x_from = (first - 1.5 * step).max(lo);
+            x_to = (last + 1.5 * step).min(hi);
+            land = (0..=40)
+                .map(|i| {
+                    let x = x_from + (x_to - x_from) * f64::from(i) / 40.0;
+                    Candidate { x, y: problem.ds.y, cost: problem.cost(gait, x, problem.ds.y) }
+                })
+                .collect();
+        }
+    }
+    (x_from, x_to, land)
+}
+
+/// Each step's chosen position as a share of the way between the mid-stances around it.
+fn chosen_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[StepPlan], smax: f64) -> Res {
+    let ratio: Vec<(f64, f64)> = plans.iter().map(|p| (p.step as f64, p.optimisation.chosen_ratio())).collect();
+    let mut chart = ChartBuilder::on(area)
+        .caption("chosen position per step", (FONT, 28))
+        .margin(12)
+        .x_label_area_size(50)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0f64..smax + 1.0, 0f64..1f64)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("step")
+        .y_desc("between mid-stances (0-1)")
+        .label_style((FONT, 18))
+        .axis_desc_style((FONT, 20))
+        .draw()
+        .map_err(err)?;
+    chart.draw_series(ratio.iter().map(|p| Circle::new(*p, 5, LEFT.filled()))).map_err(err)?;
+    Ok(())
+}
+
+/// Each step's cost at the chosen position against the fixed rule's.
+fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[StepPlan], smax: f64) -> Res {
+    let chosen: Vec<(f64, f64)> =
+        plans.iter().filter_map(|p| p.optimisation.chosen.cost.map(|c| (p.step as f64, c))).collect();
+    let fixed: Vec<(f64, f64)> =
+        plans.iter().filter_map(|p| p.optimisation.fixed_rule.cost.map(|c| (p.step as f64, c))).collect();
+    let y = y_range(&[chosen.as_slice(), fixed.as_slice()]);
+    let mut chart = ChartBuilder::on(area)
+        .caption("cost per step", (FONT, 28))
+        .margin(12)
+        .x_label_area_size(50)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0f64..smax + 1.0, y)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("step")
+        .y_desc("cost (rad^2/s^3)")
+        .label_style((FONT, 18))
+        .axis_desc_style((FONT, 20))
+        .draw()
+        .map_err(err)?;
+    chart
+        .draw_series(LineSeries::new(fixed, DESIGN.stroke_width(2)))
+        .map_err(err)?
+        .label("fixed rule")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(2)));
+    chart
+        .draw_series(LineSeries::new(chosen, RIGHT.stroke_width(3)))
+        .map_err(err)?
+        .label("optimised")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RIGHT.stroke_width(3)));
+    chart
+        .configure_series_labels()
+        .label_font((FONT, 18))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}

@@ -1,0 +1,128 @@
+//! Plots of the swing's curves over their own span: each design curve, and each step's
+//! curve as the planner adapted it to the terrain.
+
+use super::common::{DESIGN, FONT, RIGHT, Res, err, y_range};
+use super::data::Data;
+use crate::model::curve::Curve;
+use crate::model::gait_curves::CurveName;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// A chart of curves over 0–100 % of their own span.
+fn curve_chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    design: &[(f64, f64)],
+    steps: &[Vec<(f64, f64)>],
+) -> Res {
+    let mut all: Vec<&[(f64, f64)]> = vec![design];
+    all.extend(steps.iter().map(Vec::as_slice));
+    let y = y_range(&all);
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (FONT, 30))
+        .margin(12)
+        .x_label_area_size(55)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0f64..100f64, y)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .x_labels(11)
+        .x_label_formatter(&|x| format!("{x:.0}"))
+        .y_desc(y_desc)
+        .label_style((FONT, 20))
+        .axis_desc_style((FONT, 22))
+        .draw()
+        .map_err(err)?;
+    for (k, s) in steps.iter().enumerate() {
+        let series = chart.draw_series(LineSeries::new(s.clone(), RIGHT.mix(0.45).stroke_width(2))).map_err(err)?;
+        if k == 0 {
+            series
+                .label("adapted, each step")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RIGHT.stroke_width(2)));
+        }
+    }
+    chart
+        .draw_series(LineSeries::new(design.to_vec(), DESIGN.stroke_width(3)))
+        .map_err(err)?
+        .label("design")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(3)));
+    chart
+        .configure_series_labels()
+        .label_font((FONT, 20))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+/// A curve at each percent of its span, times `scale`.
+fn sample(curve: &Curve, scale: f64) -> Vec<(f64, f64)> {
+    (0..=100).map(|p| (p as f64, curve.eval(p as f64 / 100.0) * scale)).collect()
+}
+
+/// The swing foot's forward, lateral and heel-height curves.
+pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
+    root.fill(&WHITE).map_err(err)?;
+    let root = root
+        .titled("Swing foot: design curves and each step's terrain-adapted heel height", (FONT, 34))
+        .map_err(err)?;
+    let areas = root.split_evenly((1, 3));
+    let design = d.run.gait.design_curves();
+    let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_heel_height, 100.0)).collect();
+    curve_chart(
+        &areas[0],
+        "forward progress",
+        "% of swing",
+        "heel progress to footfall (0-1)",
+        &sample(design.get(CurveName::SwingForward), 1.0),
+        &[],
+    )?;
+    curve_chart(
+        &areas[1],
+        "lateral",
+        "% of swing",
+        "weight toward hip line (0-1)",
+        &sample(design.get(CurveName::SwingLateral), 1.0),
+        &[],
+    )?;
+    curve_chart(
+        &areas[2],
+        "heel height",
+        "% of swing",
+        "above toe-off ground (cm)",
+        &sample(design.get(CurveName::SwingHeelHeight), 100.0),
+        &steps,
+    )?;
+    root.present().map_err(err)
+}
+
+/// The foot pitch through the swing, each step's as adapted, and the heel-rise curve.
+pub(super) fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
+    root.fill(&WHITE).map_err(err)?;
+    let root = root.titled("Foot pitch through the swing, and heel rise", (FONT, 34)).map_err(err)?;
+    let areas = root.split_evenly((1, 2));
+    let design = d.run.gait.design_curves();
+    let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_ankle_deg, 1.0)).collect();
+    curve_chart(
+        &areas[0],
+        "ankle curve (foot pitch)",
+        "% of swing",
+        "toe up + (deg)",
+        &sample(design.get(CurveName::SwingAnkle), 1.0),
+        &steps,
+    )?;
+    curve_chart(
+        &areas[1],
+        "heel rise",
+        "% of heel-rise phase",
+        "foot-ground angle (deg)",
+        &sample(design.get(CurveName::HeelRise), 1.0),
+        &[],
+    )?;
+    root.present().map_err(err)
+}
