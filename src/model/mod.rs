@@ -16,6 +16,7 @@ pub mod gait_curves;
 pub mod ik;
 pub mod optimise;
 pub mod params;
+pub mod search;
 pub mod terrain;
 pub mod variants;
 pub mod walk;

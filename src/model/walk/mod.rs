@@ -20,6 +20,7 @@ pub mod pelvis;
 mod planner;
 pub mod pose;
 mod start;
+pub mod step_problem;
 pub mod upper;
 
 pub use gait::{
@@ -32,7 +33,6 @@ use crate::model::body::{Pose, Side};
 use crate::model::curve::Curve;
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
-use crate::model::optimise::{StepProblem, StepRecord};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::terrain::Terrain;
 use gait::{LiveCurves, cycle_targets, trajectory_curves};
@@ -42,6 +42,7 @@ use pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use pose::build_pose;
 use start::standing_start;
 use std::fmt;
+use step_problem::{StepProblem, StepRecord};
 use upper::{ArmHang, UpperBody};
 
 /// Largest phase advance of one update (cycles) [6.3.3].

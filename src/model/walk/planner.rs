@@ -10,11 +10,12 @@
 use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
-use crate::model::optimise::{Candidate, StepProblem, StepRecord};
+use crate::model::search::Candidate;
 use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall, swing_target};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
+use crate::model::walk::step_problem::{StepProblem, StepRecord};
 use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, SWING_SAMPLES, StepPlan, Walker};
 
 impl Walker {
