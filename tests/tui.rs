@@ -310,16 +310,16 @@ fn a_configs_keys_table_rebinds_keys_and_bad_entries_are_named() {
     assert!(app.quit);
 
     std::fs::write(&path, "[walk]\nspeed_mps = 1.2\n\n[keys]\npuase = \"p\"\n").unwrap();
-    let err = load_app(Some(&path), &[]).err().unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap().to_string();
     assert!(
         err.contains("keys.toml:5:") && err.contains("keys.puase") && err.contains("did you mean `pause`"),
         "{err}"
     );
     std::fs::write(&path, "[keys]\nquit = \"ctrl+\"\n").unwrap();
-    let err = load_app(Some(&path), &[]).err().unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap().to_string();
     assert!(err.contains("keys.toml:2:") && err.contains("not a key; valid:"), "{err}");
     std::fs::write(&path, "[keys]\nquit = 5\n").unwrap();
-    let err = load_app(Some(&path), &[]).err().unwrap();
+    let err = load_app(Some(&path), &[]).err().unwrap().to_string();
     assert!(err.contains("expected a key name"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

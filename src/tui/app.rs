@@ -12,8 +12,8 @@ use crate::config::{self, presets};
 use crate::model::ik::IkSolverKind;
 use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
-use crate::model::walk::Walker;
 use crate::model::walk::frame::Frame;
+use crate::model::walk::{ModelError, Walker};
 use ratatui::crossterm::event::KeyEvent;
 use std::collections::VecDeque;
 use std::path::PathBuf;
@@ -132,8 +132,8 @@ pub struct App {
 
 impl App {
     /// A lab on `params`, read from `source_text` (the file at `path`, or the embedded default).
-    pub fn new(params: WalkParams, source_text: String, path: Option<PathBuf>) -> Result<Self, String> {
-        let walker = Walker::new(&params).map_err(|e| e.to_string())?;
+    pub fn new(params: WalkParams, source_text: String, path: Option<PathBuf>) -> Result<Self, ModelError> {
+        let walker = Walker::new(&params)?;
         let frame = walker.frame(0);
         let mut app = App {
             path,

@@ -1,5 +1,6 @@
 //! What each key does in the lab, and the list the help overlay and the README show.
 
+use crate::config::{ConfigError, ConfigErrors};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 /// Everything a key can ask of the lab.
@@ -263,25 +264,26 @@ impl KeyMap {
     /// The defaults with the `[keys]` table of a config's text applied: each named action
     /// gets exactly the keys given (a string or an array of strings), and a key given to one
     /// action is taken from any other. Errors name the file, line, key and what is valid.
-    pub(crate) fn from_config(text: &str, path: &str) -> Result<KeyMap, String> {
+    pub(crate) fn from_config(text: &str, path: &str) -> Result<KeyMap, ConfigErrors> {
         let mut map = KeyMap::default();
-        let doc: toml_edit::Document<String> =
-            text.parse().map_err(|e: toml_edit::TomlError| format!("{path}: {e}"))?;
-        let Some(table) = doc.get("keys") else { return Ok(map) };
-        let place = |span: Option<std::ops::Range<usize>>| {
+        let problem = |span: Option<std::ops::Range<usize>>, key: &str, message: String| {
             let (line, col) = crate::config::line_col(text, span.map_or(0, |s| s.start));
-            format!("{path}:{line}:{col}")
+            ConfigErrors(vec![ConfigError { path: path.to_string(), line, col, key: key.to_string(), message }])
         };
+        let doc: toml_edit::Document<String> =
+            text.parse().map_err(|e: toml_edit::TomlError| problem(e.span(), "", e.message().trim().to_string()))?;
+        let Some(table) = doc.get("keys") else { return Ok(map) };
         let Some(table) = table.as_table_like() else {
-            return Err(format!("{}: keys: expected a table [keys]", place(table.span())));
+            return Err(problem(table.span(), "keys", "expected a table [keys]".into()));
         };
         for (name, item) in table.iter() {
-            let at = place(item.span().or_else(|| table.key(name).and_then(|k| k.span())));
+            let at = item.span().or_else(|| table.key(name).and_then(|k| k.span()));
+            let key = format!("keys.{name}");
             let Some(action) = name.parse::<Action>().ok() else {
                 let hint = crate::config::schema::did_you_mean(name, Action::ALL.iter().map(|a| a.name()))
                     .map_or(String::new(), |n| format!("did you mean `{n}`? "));
                 let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
-                return Err(format!("{at}: keys.{name}: unknown action; {hint}actions: {}", names.join(", ")));
+                return Err(problem(at, &key, format!("unknown action; {hint}actions: {}", names.join(", "))));
             };
             let texts: Vec<&str> = match item.as_value() {
                 Some(toml_edit::Value::String(s)) => vec![s.value().as_str()],
@@ -289,14 +291,13 @@ impl KeyMap {
                     a.iter().filter_map(|v| v.as_str()).collect()
                 }
                 _ => {
-                    return Err(format!(
-                        "{at}: keys.{name}: expected a key name or an array of them, like \"q\" or [\"q\", \"ctrl+c\"]"
-                    ));
+                    let message = "expected a key name or an array of them, like \"q\" or [\"q\", \"ctrl+c\"]";
+                    return Err(problem(at, &key, message.into()));
                 }
             };
             let mut specs = Vec::new();
             for t in texts {
-                specs.push(KeySpec::parse(t).map_err(|e| format!("{at}: keys.{name}: {e}"))?);
+                specs.push(KeySpec::parse(t).map_err(|e| problem(at.clone(), &key, e))?);
             }
             map.bindings.retain(|(k, a)| *a != action && !specs.contains(k));
             map.bindings.extend(specs.into_iter().map(|k| (k, action)));

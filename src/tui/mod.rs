@@ -53,21 +53,21 @@ pub(crate) const MARKERS: &[(&str, Marker)] =
 
 /// Builds the lab's state from the options (no terminal needed): the config read, `--set`
 /// applied, the walk started.
-pub fn load_app(config: Option<&Path>, sets: &[String]) -> Result<App, String> {
+pub fn load_app(config: Option<&Path>, sets: &[String]) -> crate::Result<App> {
     match config {
         Some(path) => {
             // Read once: a pipe (`gaitlab <(...)`) gives its bytes only once, and the size
             // limit and deadline of `read_source` keep /dev/zero or a FIFO from hanging the lab.
-            let (text, params) = config::load_with_text(path, sets).map_err(|e| e.to_string())?;
+            let (text, params) = config::load_with_text(path, sets)?;
             let keymap = keys::KeyMap::from_config(&text, &path.display().to_string())?;
-            let mut app = App::new(params, text, Some(path.to_path_buf()))?;
+            let mut app = App::new(params, text, Some(path.to_path_buf()))
+                .map_err(|source| crate::Error::Walk { config: path.to_path_buf(), source })?;
             app.keymap = keymap;
             app.overlay = recovery::find(Some(path)).map(|found| app::Overlay::Recovery { found, error: None });
             Ok(app)
         }
         None => {
-            let params =
-                config::load_text(presets::default_text(), "(embedded default)", sets).map_err(|e| e.to_string())?;
+            let params = config::load_text(presets::default_text(), "(embedded default)", sets)?;
             let mut app = App::new(params, presets::default_text().to_string(), None)?;
             app.overlay = recovery::find(None).map(|found| app::Overlay::Recovery { found, error: None });
             Ok(app)
