@@ -70,31 +70,31 @@ pub struct IkSummary {
     /// Position error, max and mean (mm).
     pub position_error_max_mm: f64,
     /// See `position_error_max_mm`.
-    pub position_error_mean_mm: f64,
+    pub(crate) position_error_mean_mm: f64,
     /// Knee direction error against the analytic swivel, max and mean (deg).
     pub knee_direction_error_max_deg: f64,
     /// See `knee_direction_error_max_deg`.
-    pub knee_direction_error_mean_deg: f64,
+    pub(crate) knee_direction_error_mean_deg: f64,
     /// Iterations, mean and max.
     pub iterations_mean: f64,
     /// See `iterations_mean`.
-    pub iterations_max: u32,
+    pub(crate) iterations_max: u32,
     /// Mean wall-clock time per solve (µs).
-    pub time_per_solve_us: f64,
+    pub(crate) time_per_solve_us: f64,
     /// Solves outside the joint ranges by more than 0.01°.
     pub limit_violations: usize,
     /// Knee jump between frames, max (mm), its frame, and mean.
-    pub knee_jump_max_mm: f64,
+    pub(crate) knee_jump_max_mm: f64,
     /// See `knee_jump_max_mm`.
-    pub knee_jump_max_frame: u64,
+    pub(crate) knee_jump_max_frame: u64,
     /// See `knee_jump_max_mm`.
-    pub knee_jump_mean_mm: f64,
+    pub(crate) knee_jump_mean_mm: f64,
     /// Ankle jump between frames, max (mm), its frame, and mean.
-    pub ankle_jump_max_mm: f64,
+    pub(crate) ankle_jump_max_mm: f64,
     /// See `ankle_jump_max_mm`.
-    pub ankle_jump_max_frame: u64,
+    pub(crate) ankle_jump_max_frame: u64,
     /// See `ankle_jump_max_mm`.
-    pub ankle_jump_mean_mm: f64,
+    pub(crate) ankle_jump_mean_mm: f64,
 }
 
 /// Solves every target with `solver` under `settings` (its own solver field is replaced).

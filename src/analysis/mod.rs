@@ -36,7 +36,7 @@ pub struct Checks {
     /// Largest stance contact slide within one phase (mm).
     pub foot_skate_mm: f64,
     /// Where it happened: frame, side, phase.
-    pub worst_skate: Option<(u64, Side, LegPhase)>,
+    pub(crate) worst_skate: Option<(u64, Side, LegPhase)>,
     /// Deepest heel or toe tip under the ground (mm, 0 if never).
     pub terrain_penetration_mm: f64,
     /// Where it happened.

@@ -33,10 +33,10 @@ pub struct Keep {
     /// Every frame's full-body pose (BVH, the stick figure): ~1.4 KB a frame.
     pub poses: bool,
     /// Both legs' IK questions of every frame (`ik.csv`, `gaitlab ik`).
-    pub ik_targets: bool,
+    pub(crate) ik_targets: bool,
     /// Each step's optimisation problem with the walk's rules at that moment, so that a
     /// step's cost landscape can be drawn afterwards: a few KB a step.
-    pub step_problems: bool,
+    pub(crate) step_problems: bool,
 }
 
 impl Keep {
@@ -66,10 +66,10 @@ pub struct Recording {
     /// Full-body pose of every frame ([`Keep::poses`]; empty otherwise).
     pub poses: Vec<Pose>,
     /// Both legs' IK questions of every frame, right then left ([`Keep::ik_targets`]).
-    pub ik_targets: Vec<IkTarget>,
+    pub(crate) ik_targets: Vec<IkTarget>,
     /// For each entry of `step_plans`, the problem its pelvis choice solved and the rules it
     /// was costed with ([`Keep::step_problems`]; `None` where none was recorded).
-    pub step_problems: Vec<Option<(StepProblem, Gait)>>,
+    pub(crate) step_problems: Vec<Option<(StepProblem, Gait)>>,
 }
 
 /// Runs `cycles` gait cycles at `fps` frames per second, keeping what `keep` asks for.

@@ -36,7 +36,7 @@ pub struct LabArgs {
     pub fps: f64,
     /// How curves and the figure are drawn: braille, halfblock or block (for fonts without braille)
     #[arg(long, default_value = "braille")]
-    pub marker: String,
+    pub(crate) marker: String,
     /// Override a key: --set walk.speed_mps=1.4 (repeatable)
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub sets: Vec<String>,

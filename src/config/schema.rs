@@ -385,7 +385,7 @@ pub struct CurveLimits {
     /// y at x = 1, if fixed.
     pub end: Option<f64>,
     /// What y is, as messages say it.
-    pub meaning: &'static str,
+    pub(crate) meaning: &'static str,
 }
 
 /// The limits of curve `c`'s control points (see [`CurveLimits`]).

@@ -236,23 +236,23 @@ pub struct BodyDims {
     /// Knee joint centre to ankle joint centre.
     pub shank: f64,
     /// Ankle joint centre above the sole.
-    pub ankle_height: f64,
+    pub(crate) ankle_height: f64,
     /// Heel to toe tip.
     pub foot_length: f64,
     /// Shoulder joint to elbow.
-    pub upper_arm: f64,
+    pub(crate) upper_arm: f64,
     /// Elbow to wrist.
-    pub forearm: f64,
+    pub(crate) forearm: f64,
     /// Wrist to finger tip.
     pub hand: f64,
     /// Between the two hip joint centres.
-    pub hip_width: f64,
+    pub(crate) hip_width: f64,
     /// Between the two shoulder joint centres.
-    pub shoulder_width: f64,
+    pub(crate) shoulder_width: f64,
     /// Hip-joint centre level to shoulder-joint level.
     pub trunk: f64,
     /// Shoulder level to the top of the head.
-    pub head_neck: f64,
+    pub(crate) head_neck: f64,
 }
 
 /// Where the toe joint sits along the foot, as a fraction of foot length from the heel (the

@@ -27,18 +27,18 @@ pub(crate) const HIP_EXTENSION_SLACK_DEG: f64 = 5.0;
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct BodyParams {
-    pub height_m: f64,
-    pub sex: Sex,
-    pub thigh_m: Option<f64>,
-    pub shank_m: Option<f64>,
-    pub ankle_height_m: Option<f64>,
-    pub foot_length_m: Option<f64>,
-    pub upper_arm_m: Option<f64>,
-    pub forearm_m: Option<f64>,
-    pub hand_m: Option<f64>,
-    pub hip_width_m: Option<f64>,
-    pub shoulder_width_m: Option<f64>,
-    pub trunk_m: Option<f64>,
+    pub(crate) height_m: f64,
+    pub(crate) sex: Sex,
+    pub(crate) thigh_m: Option<f64>,
+    pub(crate) shank_m: Option<f64>,
+    pub(crate) ankle_height_m: Option<f64>,
+    pub(crate) foot_length_m: Option<f64>,
+    pub(crate) upper_arm_m: Option<f64>,
+    pub(crate) forearm_m: Option<f64>,
+    pub(crate) hand_m: Option<f64>,
+    pub(crate) hip_width_m: Option<f64>,
+    pub(crate) shoulder_width_m: Option<f64>,
+    pub(crate) trunk_m: Option<f64>,
 }
 
 /// `[walk]`.
@@ -56,37 +56,37 @@ pub struct WalkGroup {
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct PelvisParams {
-    pub rotation_range_deg: Option<f64>,
-    pub obliquity_range_deg: Option<f64>,
+    pub(crate) rotation_range_deg: Option<f64>,
+    pub(crate) obliquity_range_deg: Option<f64>,
     pub tilt_range_deg: f64,
-    pub vertical_range_cm: Option<f64>,
-    pub lateral_range_cm: Option<f64>,
-    pub midstance_drop_cm: Option<f64>,
-    pub midstance_offset_cm: f64,
-    pub trunk_lean_deg: f64,
+    pub(crate) vertical_range_cm: Option<f64>,
+    pub(crate) lateral_range_cm: Option<f64>,
+    pub(crate) midstance_drop_cm: Option<f64>,
+    pub(crate) midstance_offset_cm: f64,
+    pub(crate) trunk_lean_deg: f64,
 }
 
 /// `[legs]`.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct LegParams {
-    pub foot_flat: f64,
+    pub(crate) foot_flat: f64,
     pub heel_rise: f64,
-    pub toe_off: Option<f64>,
-    pub turnout_deg: f64,
+    pub(crate) toe_off: Option<f64>,
+    pub(crate) turnout_deg: f64,
     pub knee_lift_cm: f64,
-    pub clearance_cm: f64,
+    pub(crate) clearance_cm: f64,
 }
 
 /// `[arms]`.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct ArmParams {
-    pub shoulder_range_deg: Option<f64>,
-    pub elbow_range_deg: Option<f64>,
-    pub elbow_min_flex_deg: f64,
-    pub spread_deg: f64,
-    pub counter_rotation_pct: f64,
+    pub(crate) shoulder_range_deg: Option<f64>,
+    pub(crate) elbow_range_deg: Option<f64>,
+    pub(crate) elbow_min_flex_deg: f64,
+    pub(crate) spread_deg: f64,
+    pub(crate) counter_rotation_pct: f64,
 }
 
 /// `[ik]`.
@@ -95,32 +95,32 @@ pub struct ArmParams {
 pub struct IkParams {
     /// Fraction of full leg reach the planner keeps the stance leg within (knee never locks
     /// straight, as in human gait where it stays ≥ ~5° flexed).
-    pub reach_margin: f64,
+    pub(crate) reach_margin: f64,
     pub solver: IkSolverKind,
     pub tolerance_mm: f64,
-    pub max_iterations: u32,
+    pub(crate) max_iterations: u32,
     pub limits: bool,
     pub hip_flex_max_deg: f64,
     pub hip_ext_max_deg: f64,
-    pub hip_abd_max_deg: f64,
-    pub hip_add_max_deg: f64,
+    pub(crate) hip_abd_max_deg: f64,
+    pub(crate) hip_add_max_deg: f64,
     pub hip_int_rot_max_deg: f64,
     pub hip_ext_rot_max_deg: f64,
     pub knee_flex_max_deg: f64,
     pub soften: f64,
     pub twist_deg: f64,
-    pub ccd_stiffness_hip: f64,
-    pub ccd_stiffness_knee: f64,
-    pub dls_damping_m: f64,
+    pub(crate) ccd_stiffness_hip: f64,
+    pub(crate) ccd_stiffness_knee: f64,
+    pub(crate) dls_damping_m: f64,
     pub jacobian: JacobianVariant,
-    pub gradient_delta0: f64,
-    pub gradient_epsilon: f64,
+    pub(crate) gradient_delta0: f64,
+    pub(crate) gradient_epsilon: f64,
     pub gradient_restarts: u32,
     pub gradient_perturbations: u32,
-    pub gradient_perturbation_deg: f64,
-    pub gradient_seed: u64,
-    pub gradient_weight_swivel: f64,
-    pub gradient_max_steps: u32,
+    pub(crate) gradient_perturbation_deg: f64,
+    pub(crate) gradient_seed: u64,
+    pub(crate) gradient_weight_swivel: f64,
+    pub(crate) gradient_max_steps: u32,
 }
 
 impl Default for IkParams {
@@ -249,16 +249,16 @@ pub struct OptimiserParams {
     pub enabled: bool,
     pub method: SearchMethod,
     pub candidates: u32,
-    pub refine: u32,
+    pub(crate) refine: u32,
     pub cost: CostForm,
     pub samples: u32,
-    pub range_pct: f64,
+    pub(crate) range_pct: f64,
     pub tolerance_mm: f64,
     pub weight_hip: f64,
     pub weight_knee: f64,
     pub weight_ankle: f64,
-    pub heel_rise_slack_deg: f64,
-    pub hip_extension_slack_deg: f64,
+    pub(crate) heel_rise_slack_deg: f64,
+    pub(crate) hip_extension_slack_deg: f64,
 }
 
 /// The kind of ground in `[terrain]`.
@@ -276,17 +276,17 @@ pub enum TerrainChoice {
 #[allow(missing_docs)]
 pub struct TerrainParams {
     pub kind: TerrainChoice,
-    pub start_x_m: f64,
+    pub(crate) start_x_m: f64,
     pub rise_m: f64,
     pub run_m: f64,
     pub count: u32,
     pub up: bool,
     pub grade_pct: f64,
     pub seed: u64,
-    pub roughness: f64,
-    pub amplitude_m: f64,
-    pub segment_m: f64,
-    pub length_m: f64,
+    pub(crate) roughness: f64,
+    pub(crate) amplitude_m: f64,
+    pub(crate) segment_m: f64,
+    pub(crate) length_m: f64,
 }
 
 impl TerrainParams {
@@ -432,45 +432,45 @@ pub struct Resolved {
     /// Lateral distance between the two feet's heel lines (m).
     pub step_width_m: f64,
     /// Cycle phase at which the loading response ends (foot flat).
-    pub foot_flat: f64,
+    pub(crate) foot_flat: f64,
     /// Cycle phase at which the heel rises.
     pub heel_rise: f64,
     /// Cycle phase of toe-off; stance lasts `toe_off` of the cycle.
-    pub toe_off: f64,
+    pub(crate) toe_off: f64,
     /// Peak-to-peak pelvic rotation (rad).
-    pub rotation_range: f64,
+    pub(crate) rotation_range: f64,
     /// Peak-to-peak pelvic obliquity (rad).
-    pub obliquity_range: f64,
+    pub(crate) obliquity_range: f64,
     /// Peak-to-peak pelvic tilt (rad).
-    pub tilt_range: f64,
+    pub(crate) tilt_range: f64,
     /// Peak-to-peak vertical pelvis displacement on level ground (m).
-    pub vertical_range: f64,
+    pub(crate) vertical_range: f64,
     /// Peak-to-peak lateral pelvis displacement (m).
-    pub lateral_range: f64,
+    pub(crate) lateral_range: f64,
     /// Pelvis height at mid-stance below the standing hip height (m).
-    pub midstance_drop: f64,
+    pub(crate) midstance_drop: f64,
     /// Pelvis ahead of the stance heel at mid-stance (m).
-    pub midstance_offset: f64,
+    pub(crate) midstance_offset: f64,
     /// Forward lean of the trunk (rad).
-    pub trunk_lean: f64,
+    pub(crate) trunk_lean: f64,
     /// Foot turnout (rad).
     pub turnout: f64,
     /// Extra heel height in mid-swing (m).
-    pub knee_lift: f64,
+    pub(crate) knee_lift: f64,
     /// Clearance the swing planner keeps over terrain corners (m).
     pub clearance: f64,
     /// Peak-to-peak shoulder flexion (rad).
-    pub shoulder_range: f64,
+    pub(crate) shoulder_range: f64,
     /// Peak-to-peak elbow flexion (rad).
-    pub elbow_range: f64,
+    pub(crate) elbow_range: f64,
     /// Least elbow flexion (rad).
-    pub elbow_min_flex: f64,
+    pub(crate) elbow_min_flex: f64,
     /// Arm abduction away from the trunk (rad).
-    pub arm_spread: f64,
+    pub(crate) arm_spread: f64,
     /// Thorax counter-rotation as a fraction of pelvic rotation.
-    pub counter_rotation: f64,
+    pub(crate) counter_rotation: f64,
     /// Reach fraction kept by the planner.
-    pub reach_margin: f64,
+    pub(crate) reach_margin: f64,
     /// Leg IK solver settings (`[ik]`).
     pub ik: IkSettings,
 }

@@ -25,13 +25,13 @@ pub struct SearchSpace {
     /// First-level candidates across the range.
     pub candidates: u32,
     /// Second-level candidates around the first level's best.
-    pub refine: u32,
+    pub(crate) refine: u32,
     /// Brent's stopping width (m).
-    pub tolerance_m: f64,
+    pub(crate) tolerance_m: f64,
     /// Forward positions searched (m).
     pub range: (f64, f64),
     /// Heights the joint search may use (m).
-    pub height_range: (f64, f64),
+    pub(crate) height_range: (f64, f64),
     /// The height every other method keeps (m).
     pub y: f64,
 }

@@ -30,9 +30,9 @@ pub struct Keep {
     /// Permission bits.
     pub mode: u32,
     /// Owner.
-    pub uid: u32,
+    pub(crate) uid: u32,
     /// Group.
-    pub gid: u32,
+    pub(crate) gid: u32,
 }
 
 /// Whether a look-up failed because the path is not there (or a file stands where a

@@ -88,7 +88,7 @@ pub struct App {
     pub frame: Frame,
     pub(super) frame_count: u64,
     /// Joint angles of recent frames: time (s), then hip, knee, ankle right, then left (deg).
-    pub traces: VecDeque<(f64, [f64; 6])>,
+    pub(crate) traces: VecDeque<(f64, [f64; 6])>,
     /// Paused.
     pub paused: bool,
     pub(super) speed_index: usize,
@@ -97,7 +97,7 @@ pub struct App {
     /// Curve chart shown (single mode) or first in the grid.
     pub curve: usize,
     /// Several curves at once.
-    pub grid: bool,
+    pub(crate) grid: bool,
     /// Panel beside the walk on narrow screens.
     pub panel: Panel,
     /// The selected parameter (index into [`PARAMS`]).
@@ -115,11 +115,11 @@ pub struct App {
     /// A re-run of the optimiser on the last step, with the method it used.
     pub rerun: Option<StepRecord>,
     /// Frames drawn per second, measured by the loop (`None` in tests: nothing to measure).
-    pub measured_fps: Option<f64>,
+    pub(crate) measured_fps: Option<f64>,
     /// The simulation frame step (s).
-    pub sim_dt: f64,
+    pub(crate) sim_dt: f64,
     /// Show wall-clock figures (search times); off in tests, whose screens must repeat.
-    pub show_timings: bool,
+    pub(crate) show_timings: bool,
     /// Key bindings (the defaults with the config's `[keys]`).
     pub keymap: KeyMap,
     /// Where exported reports go (`<export_dir>/<config stem>`).
@@ -202,7 +202,7 @@ impl App {
     }
 
     /// Walks on by `wall_dt` seconds of real time (scaled by the speed), in frames of at most
-    /// [`App::sim_dt`]; does nothing while paused. Returns whether anything moved.
+    /// `sim_dt`; does nothing while paused. Returns whether anything moved.
     pub fn tick(&mut self, wall_dt: f64) -> bool {
         if self.paused {
             return false;

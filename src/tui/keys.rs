@@ -165,7 +165,7 @@ pub(crate) struct KeySpec {
     /// With control.
     pub ctrl: bool,
     /// With shift (for keys without a shifted character).
-    pub shift: bool,
+    pub(crate) shift: bool,
 }
 
 impl KeySpec {

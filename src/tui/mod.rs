@@ -44,7 +44,7 @@ pub struct Options {
     /// Redraw cap while walking (frames/s).
     pub fps: f64,
     /// Canvas and chart marker.
-    pub marker: Marker,
+    pub(crate) marker: Marker,
 }
 
 /// The `--marker` names.

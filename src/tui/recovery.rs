@@ -42,7 +42,7 @@ pub struct Found {
     /// Its text (a whole config).
     pub text: String,
     /// How long ago it was written, in words ("4 min ago").
-    pub age: String,
+    pub(crate) age: String,
 }
 
 /// The recovery file of `config`, if there is one to offer.

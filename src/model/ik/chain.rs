@@ -17,13 +17,13 @@ use glam::{DQuat, DVec3, EulerRot};
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LegAngles {
     /// Hip flexion, + thigh forward.
-    pub hip_flex: f64,
+    pub(crate) hip_flex: f64,
     /// Hip abduction, + foot away from the midline.
-    pub hip_abd: f64,
+    pub(crate) hip_abd: f64,
     /// Hip internal rotation, + knee turned toward the midline.
-    pub hip_rot: f64,
+    pub(crate) hip_rot: f64,
     /// Knee flexion, + shank folded back; 0 is straight.
-    pub knee_flex: f64,
+    pub(crate) knee_flex: f64,
 }
 
 impl LegAngles {

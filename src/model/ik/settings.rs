@@ -100,19 +100,19 @@ impl JacobianVariant {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GradientSettings {
     /// Starting step: multiple of the gradient subtracted per step (deg² / mm²).
-    pub delta0: f64,
+    pub(crate) delta0: f64,
     /// The step halves on every failed try; descent ends below this.
-    pub epsilon: f64,
+    pub(crate) epsilon: f64,
     /// Random starting poses tried on the first frame (0: the rest pose only).
     pub restarts: u32,
     /// Random perturbations tried after every descent, each kept only if it lowers the cost.
     pub perturbations: u32,
     /// Perturbation range, ± on every angle (rad).
-    pub perturbation: f64,
+    pub(crate) perturbation: f64,
     /// Seed of the portable generator; the same seed gives the same poses on every run.
     pub seed: u64,
     /// Weight of the knee's squared swivel arc against the squared position error.
-    pub weight_swivel: f64,
+    pub(crate) weight_swivel: f64,
     /// Most descent steps (accepted or halved) in one descent.
     pub max_steps: u32,
 }
@@ -184,7 +184,7 @@ pub struct IkAnswer {
     /// Ankle to target (m).
     pub position_error: f64,
     /// The knee's arc off the reference plane (m, signed).
-    pub swivel_arc: f64,
+    pub(crate) swivel_arc: f64,
     /// Iterations used (analytic: 1; gradient: descent steps over all starts).
     pub iterations: u32,
     /// Whether the ankle is on the target within the tolerance (analytic: exactly, unsoftened).

@@ -44,7 +44,7 @@ pub struct LegFrame {
     /// Hip flexion (deg, flexion +), thigh against the pelvis.
     pub hip_flex_deg: f64,
     /// Hip abduction (deg, away from the midline +).
-    pub hip_abd_deg: f64,
+    pub(crate) hip_abd_deg: f64,
     /// Knee flexion (deg).
     pub knee_flex_deg: f64,
     /// Ankle dorsiflexion (deg, plantarflexion −), foot against the shank.
@@ -64,11 +64,11 @@ pub struct LegFrame {
     /// Ground height under the heel and under the toe tip (m).
     pub ground_under_heel: f64,
     /// Ground under the toe tip.
-    pub ground_under_toe: f64,
+    pub(crate) ground_under_toe: f64,
     /// Shoulder flexion (deg), upper arm against the chest.
     pub shoulder_flex_deg: f64,
     /// Elbow flexion (deg).
-    pub elbow_flex_deg: f64,
+    pub(crate) elbow_flex_deg: f64,
     /// Whether this frame's leg IK reached its target.
     pub reached: bool,
 }

@@ -57,27 +57,25 @@ pub struct Footfall {
     /// Heel contact point on the ground (m, world).
     pub heel: DVec3,
     /// Slope of the ground under the foot, heel to toe (rad, + uphill).
-    pub ground_angle: f64,
+    pub(crate) ground_angle: f64,
     /// Foot direction about the vertical (rad); turnout turns the toes outward.
-    pub yaw: f64,
+    pub(crate) yaw: f64,
     /// Where the step would have landed on unbroken ground (x, m); stairs move the footfall
     /// to one tread, and the next step is planned from here so the error does not add up.
-    pub nominal_x: f64,
+    pub(crate) nominal_x: f64,
 }
 
 /// The swing, planned once at toe-off: the curves the heel and foot will follow.
 #[derive(Clone, Debug)]
 pub struct SwingPlan {
     /// Heel at toe-off.
-    pub heel_from: DVec3,
+    pub(crate) heel_from: DVec3,
     /// Ground height under the toe-off foot: the heel-height curve's zero.
-    pub ground_from: f64,
+    pub(crate) ground_from: f64,
     /// The footfall the swing lands on.
     pub to: Footfall,
-    /// Foot pitch at toe-off (rad).
-    pub pitch_from: f64,
     /// Toe bend at toe-off (rad); returns to neutral over the first fifth of the swing.
-    pub toe_bend_from: f64,
+    pub(crate) toe_bend_from: f64,
     /// Heel progress 0→1 toward the footfall.
     pub forward: Curve,
     /// Weight toward the hip line.
@@ -85,7 +83,7 @@ pub struct SwingPlan {
     /// Foot pitch vs horizontal (deg), scaled to the toe-off angle and corrected uphill.
     pub ankle_deg: Curve,
     /// Heel height above `ground_from` (m): scaled, end-shifted and raised where needed.
-    pub heel_height: Curve,
+    pub(crate) heel_height: Curve,
     /// Heel-height raises the 50-sample simulation made (count).
     pub raises: u32,
 }
@@ -96,13 +94,13 @@ pub struct LegTarget {
     /// Ankle joint target (m, world).
     pub ankle: DVec3,
     /// Foot pitch vs horizontal (rad, toe up +).
-    pub pitch: f64,
+    pub(crate) pitch: f64,
     /// Toe bend relative to the foot (rad, toes up +).
-    pub toe_bend: f64,
+    pub(crate) toe_bend: f64,
     /// Foot yaw (rad).
-    pub yaw: f64,
+    pub(crate) yaw: f64,
     /// Extra heel rise the stance leg needed to reach the hip (rad), 0 mostly.
-    pub extra_heel_rise: f64,
+    pub(crate) extra_heel_rise: f64,
 }
 
 /// The solved leg.
@@ -123,9 +121,9 @@ pub struct LegPose {
     /// Heel contact point.
     pub heel: DVec3,
     /// Toe joint (ball of the foot).
-    pub ball: DVec3,
+    pub(crate) ball: DVec3,
     /// Toe tip contact point.
-    pub toe_tip: DVec3,
+    pub(crate) toe_tip: DVec3,
     /// Whether the IK reached its target.
     pub reached: bool,
     /// The target it was solved for.
@@ -140,16 +138,16 @@ pub struct LegState {
     /// Current phase.
     pub phase: LegPhase,
     /// Master phase of this leg's last heel strike; the leg's own phase is master − this.
-    pub cycle_start: f64,
+    pub(crate) cycle_start: f64,
     /// The footfall it stands on (during swing: the one it left).
     pub footfall: Footfall,
     /// The contact point held in the current stance phase: heel (loading), ankle
     /// (midstance), toe joint (heel rise).
-    pub anchor: DVec3,
+    pub(crate) anchor: DVec3,
     /// Foot–ground angle at heel strike (rad), rolled to zero through loading response.
-    pub strike_angle: f64,
+    pub(crate) strike_angle: f64,
     /// Heel-rise curve scale frozen at the phase's start: (stride / 1.8 m)².
-    pub heel_rise_scale: f64,
+    pub(crate) heel_rise_scale: f64,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
     /// Counts phase changes, so one phase instance can be told from the next.

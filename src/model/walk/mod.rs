@@ -78,15 +78,15 @@ pub struct StepPlan {
     /// The pelvis-position choice for the coming double support.
     pub optimisation: StepRecord,
     /// Pelvis height at that double support after the terrain rule and reach guard.
-    pub double_support_y: f64,
+    pub(crate) double_support_y: f64,
     /// How much the reach guard lowered the pelvis (m).
-    pub reach_guard_drop: f64,
+    pub(crate) reach_guard_drop: f64,
     /// Heel-height raises made by the swing simulation.
-    pub swing_raises: u32,
+    pub(crate) swing_raises: u32,
     /// The step's heel-height curve (m above the toe-off ground) as adapted to the terrain.
-    pub swing_heel_height: Curve,
+    pub(crate) swing_heel_height: Curve,
     /// The step's foot-pitch curve (deg) as adapted.
-    pub swing_ankle_deg: Curve,
+    pub(crate) swing_ankle_deg: Curve,
 }
 
 /// Steps of plans and footfalls a long-running walk keeps when it trims its history (the lab,

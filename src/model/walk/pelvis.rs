@@ -124,9 +124,9 @@ impl PelvisPlan {
 #[derive(Clone, Debug)]
 pub struct TrajectoryCurves {
     /// Forward progress from mid double support to mid-stance.
-    pub forward_ds_ms: Curve,
+    pub(crate) forward_ds_ms: Curve,
     /// Forward progress from mid-stance to mid double support.
-    pub forward_ms_ds: Curve,
+    pub(crate) forward_ms_ds: Curve,
     /// Height progress between two keys.
     pub vertical: Curve,
 }
@@ -150,13 +150,13 @@ pub struct PelvisPose {
     /// World rotation: rotation about y, then obliquity about x, then tilt about z.
     pub rotation: DQuat,
     /// Pelvic rotation, rad, positive when the right hip is forward.
-    pub rotation_angle: f64,
+    pub(crate) rotation_angle: f64,
     /// Pelvic obliquity, rad, positive when the right hip is higher.
-    pub obliquity: f64,
+    pub(crate) obliquity: f64,
     /// Pelvic tilt, rad, positive anterior.
     pub tilt: f64,
     /// Half the distance between the hip joints (m).
-    pub half_hip_width: f64,
+    pub(crate) half_hip_width: f64,
 }
 
 impl PelvisPose {

@@ -62,7 +62,6 @@ impl Walker {
             heel_from: toe_off_pose.heel,
             ground_from,
             to,
-            pitch_from: toe_off_pose.target.pitch,
             toe_bend_from: toe_off_pose.target.toe_bend,
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),

@@ -136,7 +136,7 @@ pub struct LegAngles {
     /// Hip flexion, thigh against the pelvis, flexion +.
     pub hip_flex_deg: f64,
     /// Hip abduction, away from the midline +.
-    pub hip_abd_deg: f64,
+    pub(crate) hip_abd_deg: f64,
     /// Knee flexion.
     pub knee_flex_deg: f64,
     /// Ankle dorsiflexion (plantarflexion −), foot against the shank.

@@ -17,13 +17,13 @@
 //! hyper-extended push-off, far past the fixed rule's hip extension and heel rise (figures in
 //! benches/README.md, "Optimiser allowances"). A candidate needing more than
 //! `HEEL_RISE_SLACK_DEG` of extra heel rise beyond what the fixed rule's position needs
-//! ([`StepProblem::heel_rise_allowance`]) is therefore infeasible.
+//! (`heel_rise_allowance`) is therefore infeasible.
 //!
 //! Downhill the same push can come without extra heel rise: once the pelvis kept its speed
 //! through its keys, the slope_down walk's optimum moved the pelvis far forward and extended
 //! the trailing hip well past normal gait's 10–20° (see benches/README.md). A candidate asking
 //! more than `HIP_EXTENSION_SLACK_DEG` of hip extension beyond the fixed rule's is
-//! infeasible too ([`StepProblem::hip_extension_allowance`]).
+//! infeasible too (`hip_extension_allowance`).
 
 use crate::model::body::Side;
 use crate::model::params::{CostForm, OptimiserParams, SearchMethod};
@@ -51,7 +51,7 @@ pub struct StepRecord {
     pub chosen: Candidate,
     /// Forward pelvis positions at the mid-stances before and after the double support (m):
     /// the window the choice sits in.
-    pub window_x: (f64, f64),
+    pub(crate) window_x: (f64, f64),
     /// The fixed rule's position and cost, for comparison.
     pub fixed_rule: Candidate,
     /// Cost evaluations the search made.
@@ -109,25 +109,25 @@ pub struct StepProblem {
     /// The swinging leg as it will be at its heel strike.
     pub landing: LegState,
     /// The stance leg's mid-stance key (start of the simulated window).
-    pub ms_before: PelvisKey,
+    pub(crate) ms_before: PelvisKey,
     /// The double-support key being chosen (its x and y are the candidate's).
     pub ds: PelvisKey,
     /// The landing leg's mid-stance key (end of the window).
-    pub ms_after: PelvisKey,
+    pub(crate) ms_after: PelvisKey,
     /// Forward positions searched.
     pub range: (f64, f64),
     /// Heights the joint search may use.
-    pub height_range: (f64, f64),
+    pub(crate) height_range: (f64, f64),
     /// The settings.
     pub settings: OptimiserParams,
     /// The most extra heel rise (rad) a candidate may ask of a stance leg: the fixed rule's
     /// own plus `optimiser.heel_rise_slack_deg` (set by [`StepProblem::with_allowance`]).
-    pub heel_rise_allowance: f64,
+    pub(crate) heel_rise_allowance: f64,
     /// The most hip extension (rad, positive) a candidate may ask of a stance leg: the fixed
     /// rule's own plus `optimiser.hip_extension_slack_deg` (set with the heel-rise one).
-    pub hip_extension_allowance: f64,
+    pub(crate) hip_extension_allowance: f64,
     /// The fixed rule's cost, found while setting the allowance (`None` if it cannot reach).
-    pub fixed_rule_cost: Option<f64>,
+    pub(crate) fixed_rule_cost: Option<f64>,
     /// The pelvis pose at each sample of the window, but for its forward position and height,
     /// which are all that a candidate changes (filled by [`StepProblem::with_allowance`];
     /// empty means "compute every pose").
@@ -149,7 +149,7 @@ impl StepProblem {
         self.simulate(walk.as_ref(), x, y).0
     }
 
-    /// Sets [`StepProblem::heel_rise_allowance`] from the fixed rule's position.
+    /// Sets `heel_rise_allowance` from the fixed rule's position.
     #[must_use]
     pub fn with_allowance(mut self, walk: &impl AsRef<Gait>) -> StepProblem {
         let gait = walk.as_ref();

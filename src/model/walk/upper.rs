@@ -13,7 +13,7 @@ use glam::{DQuat, DVec3};
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArmHang {
     /// Shoulder flexion of the hanging arm (rad; negative: the upper arm slants back).
-    pub shoulder_flex: f64,
+    pub(crate) shoulder_flex: f64,
     /// Abduction of the hanging arm (rad).
     pub spread: f64,
 }
@@ -84,19 +84,19 @@ pub struct UpperBody {
     /// Spine, chest, neck, head.
     pub trunk: [DQuat; 4],
     /// Shoulder girdle (clavicle), right then left.
-    pub girdle: [DQuat; 2],
+    pub(crate) girdle: [DQuat; 2],
     /// Upper arms.
-    pub upper_arm: [DQuat; 2],
+    pub(crate) upper_arm: [DQuat; 2],
     /// Forearms (hands follow them).
-    pub forearm: [DQuat; 2],
+    pub(crate) forearm: [DQuat; 2],
     /// Trunk bend α of the frontal compensation (rad).
-    pub trunk_bend: f64,
+    pub(crate) trunk_bend: f64,
     /// Thorax rotation about the vertical (rad).
-    pub thorax_rotation: f64,
+    pub(crate) thorax_rotation: f64,
     /// Shoulder flexion asked of each arm (rad).
-    pub shoulder_flex: [f64; 2],
+    pub(crate) shoulder_flex: [f64; 2],
     /// Elbow flexion asked of each arm (rad).
-    pub elbow_flex: [f64; 2],
+    pub(crate) elbow_flex: [f64; 2],
 }
 
 impl Default for UpperBody {

@@ -17,9 +17,9 @@ pub(crate) type ChartLine = (String, Color, Vec<(f64, f64)>);
 /// One chart's data, in display units.
 pub struct CurveData {
     /// Title with unit.
-    pub title: &'static str,
+    pub(crate) title: &'static str,
     /// What the x axis is.
-    pub x_label: &'static str,
+    pub(crate) x_label: &'static str,
     /// (name, colour, samples) of each line; the first is the curve in force.
     pub lines: Vec<ChartLine>,
     /// Bézier control points of the curve in force.
