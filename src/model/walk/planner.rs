@@ -11,12 +11,13 @@ use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
-use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall, swing_target};
+use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall, swing_target};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
 use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, SWING_SAMPLES, StepPlan, Walker};
+use glam::DVec3;
 
 impl Walker {
     /// The pelvis keys the walk starts from, around the standing start: the left mid-stance
@@ -320,9 +321,20 @@ impl Walker {
         samples.extend(
             (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
         );
+        // The other leg's heel rise up to its toe-off, which falls in the coming double
+        // support: it must reach at some heel-rise angle the walk may take (a stair's upper
+        // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
+        // tread into the next riser).
+        let trailing = self.trailing_reach(side, swing.is_some());
         let mut dropped = 0.0;
         for _ in 0..6 {
-            let mut worst: Option<(f64, KeyKind)> = None;
+            let mut deficits: Vec<(f64, f64)> = Vec::with_capacity(samples.len() + 9);
+            if let Some(t) = &trailing {
+                deficits.extend(t.phases.iter().filter_map(|&phase| {
+                    let hip = self.pelvis_at(phase).hip(side.other().sign());
+                    t.deficit(hip, limit, &r).map(|d| (phase, d))
+                }));
+            }
             for &phase in &samples {
                 let ankle = match swing {
                     Some(plan) if phase < strike_phase => {
@@ -343,27 +355,11 @@ impl Walker {
                 } else {
                     ankle.y
                 };
-                let deficit = hip.y - allowed;
-                if deficit <= 0.0 {
-                    continue;
-                }
-                // Lower whichever movable key moves the pelvis most at this instant.
-                let (a, b, u) = self.plan.bracket(phase);
-                let v = self.gait.traj.vertical.eval(u);
-                let mut choice: Option<(KeyKind, f64)> = None;
-                for (key, weight) in [(a, 1.0 - v), (b, v)] {
-                    let movable = key.phase == ds_phase || key.phase == ms_phase;
-                    if movable && choice.is_none_or(|(_, w)| weight > w) {
-                        choice = Some((key.kind, weight));
-                    }
-                }
-                let Some((kind, weight)) = choice else { continue };
-                let need = deficit / weight.max(0.25) + 1e-4;
-                if worst.is_none_or(|(w, _)| need > w) {
-                    worst = Some((need, kind));
+                if hip.y > allowed {
+                    deficits.push((phase, hip.y - allowed));
                 }
             }
-            let Some((need, kind)) = worst else { break };
+            let Some((need, kind)) = self.key_to_lower(&deficits, ds_phase, ms_phase) else { break };
             if let Some(key) = self.plan.last_of_mut(kind) {
                 key.y -= need;
                 if kind == KeyKind::DoubleSupport {
@@ -372,6 +368,50 @@ impl Walker {
             }
         }
         dropped
+    }
+
+    /// Of the movable keys (the newest double support and mid-stance: an older one may be
+    /// playing already), the one to lower and by how much, so that the worst reach deficit
+    /// goes: at each instant, the key that moves the pelvis most then.
+    fn key_to_lower(&self, deficits: &[(f64, f64)], ds_phase: f64, ms_phase: f64) -> Option<(f64, KeyKind)> {
+        let mut worst: Option<(f64, KeyKind)> = None;
+        for &(phase, deficit) in deficits {
+            let (a, b, u) = self.plan.bracket(phase);
+            let v = self.gait.traj.vertical.eval(u);
+            let mut choice: Option<(KeyKind, f64)> = None;
+            for (key, weight) in [(a, 1.0 - v), (b, v)] {
+                let movable = key.phase == ds_phase || key.phase == ms_phase;
+                if movable && choice.is_none_or(|(_, w)| weight > w) {
+                    choice = Some((key.kind, weight));
+                }
+            }
+            let Some((kind, weight)) = choice else { continue };
+            let need = deficit / weight.max(0.25) + 1e-4;
+            if worst.is_none_or(|(w, _)| need > w) {
+                worst = Some((need, kind));
+            }
+        }
+        worst
+    }
+
+    /// The other leg's remaining heel rise, when a step is being planned (`planning`) and
+    /// that leg stands.
+    fn trailing_reach(&self, side: Side, planning: bool) -> Option<TrailingReach> {
+        let leg = &self.legs[side.other().index()];
+        if !planning || leg.phase == LegPhase::Swing {
+            return None;
+        }
+        let r = &self.gait.r;
+        let ff = leg.footfall;
+        // The toe joint the heel rise turns about: where it is, or where it will be.
+        let ball = if leg.phase == LegPhase::HeelRise {
+            leg.anchor
+        } else {
+            ff.heel + foot_rotation(ff.yaw, ff.ground_angle) * (r.dims.ball_local() - r.dims.heel_local())
+        };
+        let (from, to) = (leg.cycle_start + r.heel_rise, leg.cycle_start + r.toe_off);
+        let phases = (0..=8).map(|i| from + (to - from) * f64::from(i) / 8.0).collect();
+        Some(TrailingReach { ball, footfall: ff, phases })
     }
 
     /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
@@ -427,6 +467,33 @@ impl Walker {
                 break;
             }
         }
+    }
+}
+
+/// A trailing leg in (or coming to) heel rise: the toe joint it turns about and the instants
+/// to check.
+struct TrailingReach {
+    ball: DVec3,
+    footfall: Footfall,
+    phases: Vec<f64>,
+}
+
+impl TrailingReach {
+    /// How far `hip` is above the highest point from which the leg still reaches its foot at
+    /// some heel-rise angle up to [`MAX_HEEL_RISE`] (m); `None` if it reaches, or if no
+    /// lowering would help (the foot is too far behind).
+    fn deficit(&self, hip: DVec3, limit: f64, r: &crate::model::params::Resolved) -> Option<f64> {
+        let ff = &self.footfall;
+        let allowed = (0..=29)
+            .map(|i| MAX_HEEL_RISE * f64::from(i) / 29.0)
+            .filter_map(|angle| {
+                let ankle = self.ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * r.dims.ball_local();
+                let d = hip - ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        (allowed.is_finite() && hip.y > allowed).then_some(hip.y - allowed)
     }
 }
 
