@@ -479,3 +479,21 @@ fn typing_in_the_editor_replaces_the_selected_value() {
     key(&mut app, KeyCode::Enter);
     assert_eq!(app.params.walk.speed_mps, 1.42);
 }
+
+/// `g` shows a grid of curves at every size the help promises it: four charts where the
+/// panel holds them, two where it holds only that (it used to do nothing below 160x48).
+#[test]
+fn g_shows_a_grid_of_curves_at_every_common_size() {
+    let titles = ["pelvic rotation", "pelvic obliquity", "pelvic tilt", "pelvis vertical"];
+    for (width, height, expected) in [(160, 48, 4), (100, 30, 4), (80, 24, 2)] {
+        let mut app = walked(Some(&config("default")), 30);
+        let before = screen(&app, width, height);
+        let shown_before = titles.iter().filter(|t| before.contains(*t)).count();
+        key(&mut app, KeyCode::Char('g'));
+        let after = screen(&app, width, height);
+        let shown = titles.iter().filter(|t| after.contains(*t)).count();
+        assert_eq!(shown, expected, "{width}x{height} after g:\n{after}");
+        assert!(shown > shown_before.min(1), "{width}x{height}: g changed nothing");
+        assert!(after.contains("curves in a grid"), "{width}x{height}: the status line says so");
+    }
+}

@@ -348,7 +348,15 @@ impl App {
             Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
             Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
             Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
-            Action::ToggleGrid => self.grid = !self.grid,
+            Action::ToggleGrid => {
+                self.grid = !self.grid;
+                // On narrow screens the curves share a tab with the other panels: show them.
+                if self.grid {
+                    self.panel = Panel::Curves;
+                }
+                self.message =
+                    Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
+            }
             Action::NextPanel => {
                 let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
                 self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];

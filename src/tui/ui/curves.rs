@@ -179,19 +179,25 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
     f.render_widget(chart, inner);
 }
 
-/// The curve panel: one chart, or a grid of four starting at the selected one.
+/// The curve panel: one chart, or a grid starting at the selected one — four where the
+/// panel holds 2x2 readable charts, else two stacked or side by side, as the space allows
+/// (a grid the size could not show would make `g` look dead).
 pub fn draw_curves(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let n = CurveView::ALL.len();
-    if app.grid && area.width >= 60 && area.height >= 16 {
-        let rows = Layout::vertical([Constraint::Fill(1); 2]).split(area);
-        for (r, row) in rows.iter().enumerate() {
-            let cols = Layout::horizontal([Constraint::Fill(1); 2]).split(*row);
-            for (c, cell) in cols.iter().enumerate() {
-                draw_curve(f, *cell, app, CurveView::ALL[(app.curve + 2 * r + c) % n], marker);
-            }
+    // A chart stays readable down to about 24x10 cells (axis labels, a few points per cell).
+    let (rows, cols) = match (app.grid, area.width >= 48, area.height >= 20) {
+        (false, _, _) => (1, 1),
+        (true, true, true) => (2, 2),
+        (true, false, true) => (2, 1),
+        (true, true, false) => (1, 2),
+        (true, false, false) => (1, 1),
+    };
+    let row_areas = Layout::vertical(vec![Constraint::Fill(1); rows]).split(area);
+    for (r, row) in row_areas.iter().enumerate() {
+        let cells = Layout::horizontal(vec![Constraint::Fill(1); cols]).split(*row);
+        for (c, cell) in cells.iter().enumerate() {
+            draw_curve(f, *cell, app, CurveView::ALL[(app.curve + cols * r + c) % n], marker);
         }
-    } else {
-        draw_curve(f, area, app, CurveView::ALL[app.curve % n], marker);
     }
 }
 
