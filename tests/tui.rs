@@ -497,3 +497,25 @@ fn g_shows_a_grid_of_curves_at_every_common_size() {
         assert!(after.contains("curves in a grid"), "{width}x{height}: the status line says so");
     }
 }
+
+/// The status hint follows `[keys]`, and ctrl+c quits whatever quit is bound to, through
+/// the unsaved-edits question (a second ctrl+c answers it).
+#[test]
+fn the_quit_hint_follows_the_bindings_and_ctrl_c_always_quits() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-quit-keys-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("mine.toml");
+    std::fs::write(&path, "[keys]\nquit = \"Q\"\nhelp = \"h\"\n").unwrap();
+    let mut app = load_app(Some(&path), &[]).unwrap();
+    let shown = screen(&app, 100, 30);
+    assert!(shown.contains("h help  Q quit"), "{shown}");
+    select(&mut app, "walk.speed_mps");
+    key(&mut app, KeyCode::Right);
+    press(&mut app, KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL));
+    assert_eq!(app.overlay, Some(Overlay::ConfirmQuit));
+    assert!(!app.quit);
+    press(&mut app, KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL));
+    assert!(app.quit);
+    let _ = std::fs::remove_dir_all(&dir);
+}

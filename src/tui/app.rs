@@ -14,7 +14,7 @@ use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::frame::Frame;
 use crate::model::walk::{ModelError, Walker};
-use ratatui::crossterm::event::KeyEvent;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
@@ -287,6 +287,15 @@ impl App {
 
     /// Handles one key press.
     fn on_key(&mut self, key: KeyEvent) {
+        // ctrl+c quits whatever the bindings say (a user who rebinds quit can still get out),
+        // through the unsaved-edits question; pressed at that question, it quits.
+        if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
+            match self.overlay.take() {
+                Some(Overlay::ConfirmQuit) => self.quit = true,
+                _ => self.perform(Action::Quit),
+            }
+            return;
+        }
         if let Some(overlay) = self.overlay.take() {
             self.on_overlay_key(overlay, key);
             return;

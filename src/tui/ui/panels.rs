@@ -2,7 +2,7 @@
 
 use crate::config::schema::{Kind, PARAMS};
 use crate::tui::app::{App, Overlay, PickKind};
-use crate::tui::keys::HELP;
+use crate::tui::keys::{Action, HELP};
 use crate::tui::text_input::TextInput;
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
@@ -229,7 +229,12 @@ pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     ];
     match &app.message {
         Some(m) => spans.push(Span::styled(m.clone(), Style::new().fg(Color::Yellow))),
-        None => spans.push(Span::styled("? help  q quit", Style::new().fg(Color::DarkGray))),
+        None => {
+            // The hint follows the bindings (`[keys]` may move help and quit elsewhere).
+            let first = |action| app.keymap.keys_of(action).split(' ').next().unwrap_or_default().to_string();
+            let hint = format!("{} help  {} quit", first(Action::Help), first(Action::Quit));
+            spans.push(Span::styled(hint, Style::new().fg(Color::DarkGray)));
+        }
     }
     f.render_widget(Paragraph::new(Line::from(spans)), area);
 }
