@@ -519,3 +519,23 @@ fn the_quit_hint_follows_the_bindings_and_ctrl_c_always_quits() {
     assert!(app.quit);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// No parameter name runs into its value, and values stay on screen when the panel is
+/// narrow (names are cut first, with an ellipsis).
+#[test]
+fn parameter_names_never_run_into_values_and_values_always_show() {
+    let longest = PARAMS.iter().map(|p| p.name().len()).max().unwrap();
+    assert!(gaitlab::tui::ui::panels::NAME_COLUMN > longest, "the name column holds {longest} characters and a space");
+    let mut app = walked(Some(&config("default")), 5);
+    select(&mut app, "ik.gradient_perturbations");
+    for (width, height) in [(160, 48), (100, 30), (80, 24), (60, 20)] {
+        let shown = screen(&app, width, height);
+        let row =
+            shown.lines().find(|l| l.contains("gradient_pert")).unwrap_or_else(|| panic!("{width}x{height}:\n{shown}"));
+        assert!(!row.contains("perturbations5"), "{width}x{height}: {row}");
+        assert!(
+            row.trim_end().trim_end_matches('│').trim_end().ends_with('5'),
+            "{width}x{height}: the value shows: {row}"
+        );
+    }
+}

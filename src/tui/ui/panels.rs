@@ -8,8 +8,13 @@ use ratatui::prelude::*;
 use ratatui::symbols::Marker;
 use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Wrap};
 
+/// The parameter names' column: the longest name and a space, so that no name runs into its
+/// value (checked by a test against the key table).
+pub const NAME_COLUMN: usize = 26;
+
 /// The editor: every key by group, value, unit, a `*` on changed ones; the selected key's
 /// range and doc under the list.
+
 pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     let legend = Line::from(vec![
         Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
@@ -18,7 +23,19 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
         Span::raw(" derived "),
     ]);
     let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(legend));
-    let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
+    // The selected key's range and description, whole: as many wrapped lines as they take,
+    // up to half the panel.
+    let spec = &PARAMS[app.selected];
+    let step = match spec.kind {
+        Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
+        _ => String::new(),
+    };
+    let range_line = format!("{}: {}{step}", spec.key, spec.valid_range());
+    let width = usize::from(inner.width.max(1));
+    let wrapped = |text: &str| text.chars().count().div_ceil(width).max(1);
+    let doc_lines = (wrapped(&range_line) + wrapped(spec.doc) + 1).min(usize::from(inner.height / 2)).max(2);
+    let [list_area, doc_area] =
+        Layout::vertical([Constraint::Min(3), Constraint::Length(doc_lines as u16)]).areas(inner);
     // Rows are group headers (None) or keys; only the rows that fit are built, in a window
     // that keeps the selected key in view.
     let mut rows: Vec<Option<usize>> = Vec::with_capacity(PARAMS.len() + 10);
@@ -32,6 +49,12 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     let height = usize::from(list_area.height).max(1);
     let first = selected_row.saturating_sub(height / 2).min(rows.len().saturating_sub(height));
     let saved = &app.saved;
+    // One name column for the rows in view, as wide as the widest value on them allows.
+    let value_len = |spec: &crate::config::schema::ParamSpec| {
+        app.value_text(spec).chars().count() + if spec.unit.is_empty() { 0 } else { 1 + spec.unit.len() }
+    };
+    let widest = rows[first..(first + height).min(rows.len())].iter().flatten().map(|&i| value_len(&PARAMS[i])).max();
+    let column = NAME_COLUMN.min(usize::from(list_area.width).saturating_sub(2 + widest.unwrap_or(0)));
     // Written straight into the buffer: the same cells a `List` of styled `Line`s gives, at
     // well under half the cost (the editor was the lab's most expensive panel to draw).
     let buf = f.buffer_mut();
@@ -51,8 +74,18 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
                 let derived = matches!(now, crate::config::schema::Value::Auto);
                 let value_style = if derived { Style::new().fg(Color::DarkGray) } else { Style::new().fg(Color::Cyan) };
                 let x = put(buf, x, y, mark, end, Style::new().fg(Color::LightRed).bold());
-                let x = put(buf, x, y, &format!("{:<21}", spec.name()), end, Style::new());
-                let x = put(buf, x, y, &app.value_text(spec), end, value_style);
+                // The value is always shown: the name column gives way first, cut with `…`.
+                let value = app.value_text(spec);
+                let room = usize::from(end.saturating_sub(x)).saturating_sub(value_len(spec) + 1);
+                let column = column.min(room);
+                let name = spec.name();
+                let shown = if name.len() <= column.saturating_sub(1) || column == 0 {
+                    format!("{name:<column$}")
+                } else {
+                    format!("{}… ", &name[..column.saturating_sub(2)])
+                };
+                let x = put(buf, x, y, &shown, end, Style::new());
+                let x = put(buf, x, y, &value, end, value_style);
                 if !spec.unit.is_empty() {
                     put(buf, x, y, &format!(" {}", spec.unit), end, Style::new());
                 }
@@ -62,16 +95,8 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
             buf.set_style(Rect { x: list_area.x, y, width: list_area.width, height: 1 }, Style::new().reversed());
         }
     }
-    let spec = &PARAMS[app.selected];
-    let step = match spec.kind {
-        Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
-        _ => String::new(),
-    };
-    let doc = Paragraph::new(vec![
-        Line::styled(format!("{}: {}{step}", spec.key, spec.valid_range()), Style::new().fg(Color::Yellow)),
-        Line::raw(spec.doc),
-    ])
-    .wrap(Wrap { trim: true });
+    let doc = Paragraph::new(vec![Line::styled(range_line, Style::new().fg(Color::Yellow)), Line::raw(spec.doc)])
+        .wrap(Wrap { trim: true });
     f.render_widget(doc, doc_area);
 }
 
