@@ -357,15 +357,7 @@ impl App {
             Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
             Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
             Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
-            Action::ToggleGrid => {
-                self.grid = !self.grid;
-                // On narrow screens the curves share a tab with the other panels: show them.
-                if self.grid {
-                    self.panel = Panel::Curves;
-                }
-                self.message =
-                    Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
-            }
+            Action::ToggleGrid => self.toggle_grid(),
             Action::NextPanel => {
                 let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
                 self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
@@ -386,6 +378,16 @@ impl App {
                 self.set_value(spec, &Value::Word(next.name()));
             }
         }
+    }
+
+    /// One curve or a grid of them; on narrow screens the curves share a tab with the other
+    /// panels, so a grid switches to it.
+    fn toggle_grid(&mut self) {
+        self.grid = !self.grid;
+        if self.grid {
+            self.panel = Panel::Curves;
+        }
+        self.message = Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
     }
 
     /// Opens the preset list, or the terrain kinds with the current one highlighted.

@@ -14,7 +14,6 @@ pub const NAME_COLUMN: usize = 26;
 
 /// The editor: every key by group, value, unit, a `*` on changed ones; the selected key's
 /// range and doc under the list.
-
 pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
     let legend = Line::from(vec![
         Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
@@ -23,19 +22,8 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
         Span::raw(" derived "),
     ]);
     let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(legend));
-    // The selected key's range and description, whole: as many wrapped lines as they take,
-    // up to half the panel.
-    let spec = &PARAMS[app.selected];
-    let step = match spec.kind {
-        Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
-        _ => String::new(),
-    };
-    let range_line = format!("{}: {}{step}", spec.key, spec.valid_range());
-    let width = usize::from(inner.width.max(1));
-    let wrapped = |text: &str| text.chars().count().div_ceil(width).max(1);
-    let doc_lines = (wrapped(&range_line) + wrapped(spec.doc) + 1).min(usize::from(inner.height / 2)).max(2);
-    let [list_area, doc_area] =
-        Layout::vertical([Constraint::Min(3), Constraint::Length(doc_lines as u16)]).areas(inner);
+    let (doc, doc_lines) = selected_doc(app, inner);
+    let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(doc_lines)]).areas(inner);
     // Rows are group headers (None) or keys; only the rows that fit are built, in a window
     // that keeps the selected key in view.
     let mut rows: Vec<Option<usize>> = Vec::with_capacity(PARAMS.len() + 10);
@@ -95,9 +83,24 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
             buf.set_style(Rect { x: list_area.x, y, width: list_area.width, height: 1 }, Style::new().reversed());
         }
     }
+    f.render_widget(doc, doc_area);
+}
+
+/// The selected key's range and description, whole: the paragraph and the lines it takes
+/// wrapped at the panel's width, up to half the panel.
+fn selected_doc(app: &App, inner: Rect) -> (Paragraph<'static>, u16) {
+    let spec = &PARAMS[app.selected];
+    let step = match spec.kind {
+        Kind::Real { .. } => format!("; step {} (shift: x10)", App::fine_step(spec)),
+        _ => String::new(),
+    };
+    let range_line = format!("{}: {}{step}", spec.key, spec.valid_range());
+    let width = usize::from(inner.width.max(1));
+    let wrapped = |text: &str| text.chars().count().div_ceil(width).max(1);
+    let lines = (wrapped(&range_line) + wrapped(spec.doc) + 1).min(usize::from(inner.height / 2)).max(2);
     let doc = Paragraph::new(vec![Line::styled(range_line, Style::new().fg(Color::Yellow)), Line::raw(spec.doc)])
         .wrap(Wrap { trim: true });
-    f.render_widget(doc, doc_area);
+    (doc, lines as u16)
 }
 
 /// Writes `text` from `x` on row `y`, stopping before column `end`; returns the column after
