@@ -539,3 +539,24 @@ fn parameter_names_never_run_into_values_and_values_always_show() {
         );
     }
 }
+
+/// Small things a newcomer met: undo names the value now in force, the help's widest keys
+/// do not run into their description, a paused lab shows no frame rate.
+#[test]
+fn undo_says_what_is_in_force_help_keys_fit_and_paused_shows_no_fps() {
+    let mut app = walked(Some(&config("default")), 5);
+    select(&mut app, "walk.speed_mps");
+    key(&mut app, KeyCode::Right);
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.message.as_deref(), Some("undone: back to walk.speed_mps = 1.3"));
+    key(&mut app, KeyCode::Char('?'));
+    let help = screen(&app, 160, 48);
+    let row = help.lines().find(|l| l.contains("shift+right L")).expect("the coarse-step line");
+    assert!(row.contains("shift+right L  ") || row.contains("shift+right L "), "{row}");
+    assert!(!row.contains("Lchange") && !row.contains("Lby"), "{row}");
+    key(&mut app, KeyCode::Esc);
+    app.measured_fps = Some(14.0);
+    key(&mut app, KeyCode::Char(' '));
+    assert!(app.paused);
+    assert!(!screen(&app, 100, 30).contains("14 fps"), "paused: no frame rate");
+}

@@ -115,7 +115,7 @@ pub struct App {
     /// A re-run of the optimiser on the last step, with the method it used.
     pub rerun: Option<StepRecord>,
     /// Frames drawn per second, measured by the loop (`None` in tests: nothing to measure).
-    pub(crate) measured_fps: Option<f64>,
+    pub measured_fps: Option<f64>,
     /// The simulation frame step (s).
     pub(crate) sim_dt: f64,
     /// Show wall-clock figures (search times); off in tests, whose screens must repeat.

@@ -146,7 +146,28 @@ impl App {
     pub(super) fn undo(&mut self) {
         match self.undo.pop() {
             Some(edit) => {
-                self.apply(edit.before.clone(), format!("undone: {}", edit.what), false);
+                // Say what is in force now, not what was taken back.
+                let now: Vec<String> = PARAMS
+                    .iter()
+                    .filter(|spec| (spec.get)(&edit.before) != (spec.get)(&edit.after))
+                    .take(3)
+                    .map(|spec| {
+                        let value = match (spec.get)(&edit.before) {
+                            Value::Real(x) => toml_number(x),
+                            Value::Auto => "auto".into(),
+                            Value::Int(n) => n.to_string(),
+                            Value::Word(w) => w.to_string(),
+                            Value::Bool(b) => b.to_string(),
+                        };
+                        format!("{} = {value}", spec.key)
+                    })
+                    .collect();
+                let message = if now.is_empty() {
+                    format!("undone: {}", edit.what)
+                } else {
+                    format!("undone: back to {}", now.join(", "))
+                };
+                self.apply(edit.before.clone(), message, false);
                 self.redo.push(edit);
             }
             None => self.message = Some("nothing to undo".into()),

@@ -245,7 +245,9 @@ pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
         Span::styled(" saved ", Style::new().fg(Color::Black).bg(Color::Green))
     };
     let run = if app.paused { "paused".to_string() } else { format!("x{}", app.speed()) };
-    let fps = app.measured_fps.map_or(String::new(), |f| format!(" {f:.0} fps"));
+    // A paused lab draws only on keys: its frame rate says nothing.
+    let fps =
+        if app.paused { String::new() } else { app.measured_fps.map_or(String::new(), |f| format!(" {f:.0} fps")) };
     let mut spans = vec![
         Span::styled(format!(" {} ", app.file_label()), Style::new().bold()),
         saved,
@@ -303,12 +305,15 @@ pub(crate) fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
         |error: &Option<String>| error.as_ref().map(|e| Line::styled(e.clone(), Style::new().fg(Color::LightRed)));
     match overlay {
         Overlay::Help => {
-            let lines: Vec<Line> = HELP
+            // The keys column as wide as its widest entry, which rebinding can change.
+            let keys: Vec<String> = HELP.iter().map(|(actions, _)| app.keymap.help_keys(actions)).collect();
+            let column = keys.iter().map(|k| k.chars().count()).max().unwrap_or(0);
+            let lines: Vec<Line> = keys
                 .iter()
-                .map(|(actions, what)| {
-                    let keys = app.keymap.help_keys(actions);
+                .zip(HELP)
+                .map(|(keys, (_, what))| {
                     Line::from(vec![
-                        Span::styled(format!("{keys:<27} "), Style::new().fg(Color::Yellow)),
+                        Span::styled(format!("{keys:<column$} "), Style::new().fg(Color::Yellow)),
                         Span::raw(*what),
                     ])
                 })
