@@ -560,3 +560,28 @@ fn undo_says_what_is_in_force_help_keys_fit_and_paused_shows_no_fps() {
     assert!(app.paused);
     assert!(!screen(&app, 100, 30).contains("14 fps"), "paused: no frame rate");
 }
+
+/// Below the documented minimum a notice says so; at the minimum every help line can be
+/// reached by scrolling.
+#[test]
+fn small_terminals_get_a_notice_and_the_help_scrolls() {
+    let (min_w, min_h) = gaitlab::tui::ui::MIN;
+    let mut app = walked(Some(&config("default")), 5);
+    let tiny = screen(&app, 40, 12);
+    assert!(tiny.contains(&format!("needs at least {min_w}x{min_h}")) && tiny.contains("40x12"), "{tiny}");
+    let at_min = screen(&app, min_w, min_h);
+    assert!(!at_min.contains("needs at least"), "{at_min}");
+    key(&mut app, KeyCode::Char('?'));
+    let mut seen = String::new();
+    for _ in 0..gaitlab::tui::keys::HELP.len() {
+        seen.push_str(&screen(&app, min_w, min_h));
+        key(&mut app, KeyCode::Down);
+    }
+    assert_eq!(app.overlay, Some(Overlay::Help), "scrolling keeps the help open");
+    for (_, what) in gaitlab::tui::keys::HELP {
+        let start: String = what.chars().take(20).collect();
+        assert!(seen.contains(&start), "`{what}` never shown at {min_w}x{min_h}");
+    }
+    key(&mut app, KeyCode::Esc);
+    assert_eq!(app.overlay, None);
+}

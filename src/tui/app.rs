@@ -116,6 +116,8 @@ pub struct App {
     pub rerun: Option<StepRecord>,
     /// Frames drawn per second, measured by the loop (`None` in tests: nothing to measure).
     pub measured_fps: Option<f64>,
+    /// First line of the help shown (it scrolls on short terminals).
+    pub(crate) help_scroll: u16,
     /// The simulation frame step (s).
     pub(crate) sim_dt: f64,
     /// Show wall-clock figures (search times); off in tests, whose screens must repeat.
@@ -159,6 +161,7 @@ impl App {
             landscape: None,
             rerun: None,
             measured_fps: None,
+            help_scroll: 0,
             sim_dt: 1.0 / 60.0,
             show_timings: false,
             keymap: KeyMap::default(),
@@ -315,7 +318,10 @@ impl App {
                     self.quit = true;
                 }
             }
-            Action::Help => self.overlay = Some(Overlay::Help),
+            Action::Help => {
+                self.help_scroll = 0;
+                self.overlay = Some(Overlay::Help);
+            }
             Action::Pause => self.paused = !self.paused,
             Action::Step => {
                 self.paused = true;

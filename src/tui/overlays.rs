@@ -10,12 +10,22 @@ use std::path::PathBuf;
 impl App {
     pub(super) fn on_overlay_key(&mut self, overlay: Overlay, key: KeyEvent) {
         match overlay {
-            Overlay::Help => {
-                // Any key closes the help; `q` also quits, as users expect.
-                if key.code == KeyCode::Char('q') {
-                    self.perform(Action::Quit);
+            Overlay::Help => match key.code {
+                // On a short terminal the list scrolls; any other key closes it, and `q`
+                // also quits, as users expect.
+                KeyCode::Down | KeyCode::Char('j') | KeyCode::PageDown => {
+                    self.help_scroll =
+                        self.help_scroll.saturating_add(if key.code == KeyCode::PageDown { 10 } else { 1 });
+                    self.overlay = Some(Overlay::Help);
                 }
-            }
+                KeyCode::Up | KeyCode::Char('k') | KeyCode::PageUp => {
+                    self.help_scroll =
+                        self.help_scroll.saturating_sub(if key.code == KeyCode::PageUp { 10 } else { 1 });
+                    self.overlay = Some(Overlay::Help);
+                }
+                KeyCode::Char('q') => self.perform(Action::Quit),
+                _ => {}
+            },
             Overlay::ConfirmQuit => match key.code {
                 KeyCode::Char('y' | 'q') => self.quit = true,
                 KeyCode::Char('s') => {

@@ -12,6 +12,8 @@ use ratatui::widgets::Tabs;
 
 /// Screens at least this big get every panel at once.
 pub(crate) const WIDE: (u16, u16) = (140, 40);
+/// The smallest terminal the lab draws in (columns, rows); below it, a notice.
+pub const MIN: (u16, u16) = (60, 20);
 
 /// Draws a panel's border with a title at the top left and, optionally, one at the bottom
 /// left — the cells `Block::bordered().title(..).title_bottom(..)` gives — and returns the
@@ -49,6 +51,17 @@ pub fn panel(f: &mut Frame, area: Rect, title: Line<'_>, bottom: Option<Line<'_>
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
     let area = f.area();
+    if area.width < MIN.0 || area.height < MIN.1 {
+        // Below this the panels cannot show a parameter's value or the help's keys: say so
+        // instead of drawing a broken screen (keys still work: q quits, the walk goes on).
+        let lines = vec![
+            Line::raw(format!("gaitlab needs at least {}x{}", MIN.0, MIN.1)),
+            Line::raw(format!("(this terminal is {}x{}).", area.width, area.height)),
+            Line::raw("Enlarge it, or q to quit."),
+        ];
+        f.render_widget(ratatui::widgets::Paragraph::new(lines).wrap(ratatui::widgets::Wrap { trim: true }), area);
+        return;
+    }
     let [main, status] = Layout::vertical([Constraint::Min(1), Constraint::Length(1)]).areas(area);
     if area.width >= WIDE.0 && area.height >= WIDE.1 {
         let [left, middle, right] =

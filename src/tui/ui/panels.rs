@@ -318,8 +318,14 @@ pub(crate) fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
                     ])
                 })
                 .collect();
-            let height = lines.len() as u16 + 2;
-            dialog(f, centered(area, 76, height), " Keys (any key closes) ", lines, false);
+            // All of it where it fits; else a window that up/down scroll (clamped at the end).
+            let fits = area.height.saturating_sub(2).max(1);
+            let total = lines.len() as u16;
+            let title =
+                if total > fits { " Keys (up/down: scroll, other keys close) " } else { " Keys (any key closes) " };
+            let first = usize::from(app.help_scroll.min(total.saturating_sub(fits)));
+            let shown: Vec<Line> = lines.into_iter().skip(first).collect();
+            dialog(f, centered(area, 76, total.min(fits) + 2), title, shown, false);
         }
         Overlay::Typing { text, error } => {
             let spec = &PARAMS[app.selected];
