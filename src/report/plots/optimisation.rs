@@ -129,6 +129,8 @@ fn chosen_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[S
     chart
         .configure_mesh()
         .x_desc("step")
+        // Steps are whole numbers: "2.0, 4.0" read as if there were half steps.
+        .x_label_formatter(&|x| format!("{x:.0}"))
         .y_desc("between mid-stances (0-1)")
         .label_style((FONT, 18))
         .axis_desc_style((FONT, 20))
@@ -155,6 +157,8 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
     chart
         .configure_mesh()
         .x_desc("step")
+        // Steps are whole numbers: "2.0, 4.0" read as if there were half steps.
+        .x_label_formatter(&|x| format!("{x:.0}"))
         .y_desc("cost (rad^2/s^3)")
         .label_style((FONT, 18))
         .axis_desc_style((FONT, 20))

@@ -72,11 +72,16 @@ fn view(frames: &[Frame]) -> (f64, f64, f64, f64) {
     let x1 = frames[frames.len() - 1].pelvis.x + 0.6;
     let ground = frames.iter().flat_map(|f| f.legs.iter().map(|l| l.ground_under_heel)).fold(f64::INFINITY, f64::min);
     let top = frames.iter().map(|f| f.pelvis.y).fold(f64::NEG_INFINITY, f64::max) + 1.0;
-    let (w, h) = (f64::from(SIZE.0 - 120), f64::from(SIZE.1 - 160));
-    let height = (x1 - x0) * h / w;
+    // The plotting area in pixels: the image less the margins, the y labels, the x labels
+    // and the caption (measured from the SVG: 1500 x 875).
+    let (w, h) = (f64::from(SIZE.0 - 2 * 15 - 70), f64::from(SIZE.1 - 2 * 15 - 55 - 40));
     let y0 = ground - 0.1;
-    let y1 = (y0 + height).max(top);
-    (x0, x1, y0, y1)
+    let y1 = (y0 + (x1 - x0) * h / w).max(top);
+    // A tall walk (stairs, the head) widens the view rather than stretching the metres of
+    // one axis: the figure keeps its proportions.
+    let width = (y1 - y0) * w / h;
+    let middle = 0.5 * (x0 + x1);
+    (middle - 0.5 * width, middle + 0.5 * width, y0, y1)
 }
 
 /// The terrain's profile from `x0` to `x1`, sampled finely enough to show stair nosings.

@@ -1,0 +1,58 @@
+//! The report's plots read back from their SVGs: axes a paper can use.
+
+use std::path::Path;
+
+fn report(dir: &Path) {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+        .args(["report", "configs/default.toml", "--cycles", "4", "--out", dir.to_str().unwrap()])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// Numeric text labels of an SVG with their positions: (x, y, value).
+fn numeric_labels(svg: &str) -> Vec<(f64, f64, f64, String)> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| {
+            let text = n.text()?.trim().to_string();
+            let value: f64 = text.parse().ok()?;
+            let x: f64 = n.attribute("x")?.parse().ok()?;
+            let y: f64 = n.attribute("y")?.parse().ok()?;
+            Some((x, y, value, text))
+        })
+        .collect()
+}
+
+#[test]
+fn the_stick_figure_is_drawn_at_one_metre_per_metre_and_steps_are_whole_numbers() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report(&dir);
+    // Stick figure: pixels per metre from the x tick labels (bottom) and the y tick labels
+    // (left), equal within 3 %.
+    let svg = std::fs::read_to_string(dir.join("plots/stick_figure.svg")).unwrap();
+    let labels = numeric_labels(&svg);
+    let mut x_ticks: Vec<(f64, f64)> =
+        labels.iter().filter(|l| l.1 > 900.0 && l.0 > 100.0).map(|l| (l.0, l.2)).collect();
+    let mut y_ticks: Vec<(f64, f64)> = labels.iter().filter(|l| l.0 < 100.0).map(|l| (l.1, l.2)).collect();
+    x_ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    y_ticks.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let per_m = |t: &[(f64, f64)]| ((t[t.len() - 1].0 - t[0].0) / (t[t.len() - 1].1 - t[0].1)).abs();
+    let (sx, sy) = (per_m(&x_ticks), per_m(&y_ticks));
+    assert!((sx / sy - 1.0).abs() < 0.03, "x {sx:.1} px/m, y {sy:.1} px/m");
+    // Optimisation: the step axes read 0, 2, 4 …, every label distinct.
+    let svg = std::fs::read_to_string(dir.join("plots/optimisation.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let texts: Vec<String> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .map(|t| t.trim().to_string())
+        .collect();
+    assert!(texts.iter().any(|t| t == "step"), "the step axis is labelled");
+    assert!(!texts.iter().any(|t| t == "2.0" || t == "4.0"), "steps are whole numbers: {texts:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
