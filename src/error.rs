@@ -45,6 +45,9 @@ pub enum Error {
     /// A command-line value clap cannot check: a range, a name.
     #[error("{0}")]
     Usage(String),
+    /// Snapshots that drifted or are missing (`gaitlab snapshot`): a failed test, exit 1.
+    #[error("{0}")]
+    Snapshot(String),
 }
 
 impl Error {
@@ -54,7 +57,7 @@ impl Error {
         match self {
             Error::Config(_) | Error::Walk { .. } | Error::Model(_) | Error::Usage(_) => 2,
             Error::Output(e) => u8::try_from(e.exit_code()).unwrap_or(1),
-            Error::TooShort(_) | Error::Write { .. } => 1,
+            Error::TooShort(_) | Error::Write { .. } | Error::Snapshot(_) => 1,
         }
     }
 }

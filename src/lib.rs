@@ -3,7 +3,7 @@
 //!
 //! The crate is layered: [`model`] is the walk and knows nothing of files or terminals;
 //! [`config`] reads and validates TOML into model parameters; [`output`] writes the joint
-//! table; [`analysis`] measures walks; [`report`] writes report folders; [`tui`] is the terminal lab and [`cli`] the command
+//! table; [`analysis`] measures walks; [`report`] writes report folders; [`snapshot`] checks walks against stored figures; [`tui`] is the terminal lab and [`cli`] the command
 //! line, both on top of the rest.
 //!
 //! The model's spec is `docs/gait-model.md` in the repository: "spec §N" in these docs is its
@@ -21,4 +21,5 @@ pub mod error;
 pub mod model;
 pub mod output;
 pub mod report;
+pub mod snapshot;
 pub mod tui;

@@ -1,6 +1,7 @@
 //! `gaitlab report`: the folder's files, their headers and keys, determinism, `--set` in
-//! config.toml, failures that leave nothing behind, and a reviewed snapshot of every
-//! config's summary.json.
+//! config.toml, failures that leave nothing behind. (Every config's summary figures are
+//! checked against `configs/NAME.snap.json` by `tests/snapshot.rs`, through `gaitlab
+//! snapshot`'s code.)
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -176,34 +177,6 @@ fn a_failed_report_leaves_no_folder_and_bad_input_exits_2() {
     let out = gaitlab(&["report", "configs/default.toml", "--set", "walk.speed_mps=9"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("walk.speed_mps"));
-}
-
-/// Every config's figures, rounded to 3 decimals, so any change to the walk's numbers shows
-/// up in review.
-#[test]
-fn every_configs_summary_json() {
-    insta::glob!("../configs", "*.toml", |path| {
-        let params = gaitlab::config::load(path, &[]).unwrap();
-        let run = gaitlab::analysis::run(&params, 8.0, 60.0).unwrap();
-        let summary = gaitlab::report::metrics::summarise(&run).unwrap();
-        let value = serde_json::to_value(&summary).unwrap();
-        let rounded: serde_json::Map<String, serde_json::Value> = value
-            .as_object()
-            .unwrap()
-            .iter()
-            .map(|(k, v)| {
-                let v = match v.as_u64() {
-                    Some(n) => serde_json::json!(n),
-                    None => {
-                        let x = (v.as_f64().unwrap() * 1000.0).round() / 1000.0;
-                        serde_json::json!(if x == 0.0 { 0.0 } else { x })
-                    }
-                };
-                (k.clone(), v)
-            })
-            .collect();
-        insta::assert_snapshot!(serde_json::to_string_pretty(&rounded).unwrap());
-    });
 }
 
 /// walk.bvh read back by an independent parser (bvh_anim), its channels turned into joint

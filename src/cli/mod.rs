@@ -10,6 +10,7 @@ use clap::{Parser, Subcommand};
 mod common;
 mod ik;
 mod optimise;
+mod snapshot;
 use common::{Progress, in_range};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -142,6 +143,30 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// Snapshot tests: compare each config's walk (summary figures, mean joint curves) with NAME.snap.json beside it
+    Snapshot {
+        /// Configs: files, or folders (every *.toml directly in them, sorted).
+        #[arg(required = true, value_name = "PATH")]
+        paths: Vec<PathBuf>,
+        /// Write missing snapshots and rewrite drifted ones (then review the diff and commit them)
+        #[arg(long)]
+        update: bool,
+        /// One JSON object a line, one per config: config, status, snapshot, moved
+        #[arg(long)]
+        json: bool,
+        /// Also write the result as JUnit XML (one testcase per config) to FILE
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+        /// Tolerances: a TOML file with a [tolerance] table (kinds like angles_deg, or figure keys)
+        #[arg(long, value_name = "FILE")]
+        tolerance: Option<PathBuf>,
+        /// For each config that moved, write DIR/STEM.png (its config's file stem): stored against new joint curves
+        #[arg(long, value_name = "DIR")]
+        plot: Option<PathBuf>,
+        /// Override a key in every config: --set sim.cycles=6 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// List the presets: name, then a short description
     Presets,
     /// Print a complete, commented config
@@ -200,6 +225,18 @@ pub fn run(cli: Cli) -> u8 {
         Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
             ("ik", ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets))
         }
+        Some(Command::Snapshot { paths, update, json, junit, tolerance, plot, sets }) => (
+            "snapshot",
+            snapshot::run(&snapshot::Args {
+                paths: &paths,
+                update,
+                json,
+                junit: junit.as_deref(),
+                tolerance: tolerance.as_deref(),
+                plot: plot.as_deref(),
+                sets: &sets,
+            }),
+        ),
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));

@@ -399,7 +399,7 @@ fn example_key(group: &str) -> String {
 
 /// A TOML number as `f64`. An integer too large for `i64` is still a number (a large one);
 /// `None` for anything not a number.
-fn number(v: &DeValue<'_>) -> Option<f64> {
+pub(crate) fn number(v: &DeValue<'_>) -> Option<f64> {
     match v {
         DeValue::Float(f) => f.as_str().replace('_', "").parse::<f64>().ok(),
         DeValue::Integer(i) => {

@@ -14,10 +14,12 @@ mod cycle;
 mod data;
 mod ik;
 mod optimisation;
+mod overlay;
 mod stick_figure;
 mod swing;
 
 pub use common::SIZE;
+pub(crate) use overlay::Overlay;
 
 use crate::analysis::Run;
 use crate::analysis::ik::{IkTarget, SolverRun};
@@ -82,4 +84,20 @@ pub fn write_ik_plot(dir: &Path, targets: &[IkTarget], runs: &[SolverRun]) -> Re
     register_font();
     both!(dir, "ik", ik, targets, runs);
     Ok(())
+}
+
+/// PNG bytes ([`SIZE`]) of `curves` against their stored versions, under `title`, with
+/// `notes` listed beside them (`gaitlab snapshot --plot`): drawn in memory, so that the
+/// caller writes the file through the output module.
+pub(crate) fn overlay_png(title: &str, curves: &[Overlay<'_>], notes: &[String]) -> Result<Vec<u8>, String> {
+    use image::ImageEncoder as _;
+    register_font();
+    let (w, h) = SIZE;
+    let mut rgb = vec![0u8; w as usize * h as usize * 3];
+    overlay::overlay(BitMapBackend::with_buffer(&mut rgb, SIZE).into_drawing_area(), title, curves, notes)?;
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(&rgb, w, h, image::ColorType::Rgb8)
+        .map_err(|e| format!("plot: {e}"))?;
+    Ok(png)
 }
