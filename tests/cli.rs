@@ -423,3 +423,31 @@ fn endless_inputs_as_a_config_are_refused_at_once() {
         assert!(started.elapsed().as_secs_f64() < 2.0, "{command} took {:?}", started.elapsed());
     }
 }
+
+/// `check` validates `[keys]` exactly as the lab does: the same refusals, the same lines.
+#[test]
+fn check_and_the_lab_agree_on_key_bindings() {
+    let dir = temp_dir("check-keys");
+    let cases = [
+        ("[keys]\nquit = \"Q\"\npause = [\"p\", \"ctrl+space\"]\n", true),
+        ("[keys]\npuase = \"p\"\n", false),
+        ("[keys]\nquit = \"ctrl+\"\n", false),
+        ("[keys]\nquit = 5\n", false),
+        ("keys = 3\n", false),
+    ];
+    for (i, (text, valid)) in cases.iter().enumerate() {
+        let path = dir.join(format!("k{i}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let o = gaitlab(&["check", path.to_str().unwrap()]);
+        let lab = gaitlab::tui::load_app(Some(&path), &[]);
+        assert_eq!(o.status.success(), *valid, "{text}: {}", text_of(&o.stderr));
+        assert_eq!(lab.is_ok(), *valid, "{text}");
+        if let Err(e) = lab {
+            assert_eq!(text_of(&o.stderr).trim_end(), e.to_string(), "{text}: the same message");
+        }
+    }
+}
+
+fn text_of(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}

@@ -318,8 +318,11 @@ fn report(args: &ReportArgs<'_>) -> Result<()> {
 fn check(configs: &[PathBuf], sets: &[String]) -> Result<()> {
     let mut problems = Vec::new();
     for path in configs {
-        match config::load(path, sets) {
-            Ok(_) => println!("ok: {}", path.display()),
+        // `[keys]` is the lab's, and checked exactly as the lab checks it: a config `check`
+        // calls ok must open in the lab.
+        let keys = |text: &str| crate::tui::keys::KeyMap::from_config(text, &path.display().to_string()).map(|_| ());
+        match config::load_with_text(path, sets).and_then(|(text, _)| keys(&text)) {
+            Ok(()) => println!("ok: {}", path.display()),
             Err(e) => problems.extend(e.0),
         }
     }
