@@ -585,3 +585,18 @@ fn small_terminals_get_a_notice_and_the_help_scrolls() {
     key(&mut app, KeyCode::Esc);
     assert_eq!(app.overlay, None);
 }
+
+/// The arm curves the config lists ([curves.shoulder], [curves.elbow]) are among the charts
+/// `c` cycles through, drawn in degrees as the walk plays them.
+#[test]
+fn the_arm_curves_are_charted_too() {
+    let mut app = walked(Some(&config("default")), 30);
+    key(&mut app, KeyCode::Char('C'));
+    let elbow = screen(&app, 160, 48);
+    assert!(elbow.contains("elbow flexion, right (deg)"), "{elbow}");
+    key(&mut app, KeyCode::Char('C'));
+    let shoulder = screen(&app, 160, 48);
+    assert!(shoulder.contains("shoulder flexion, right (deg)"), "{shoulder}");
+    // The shoulder swings about ±12.5° on the default walk: the axis says so.
+    assert!(shoulder.contains("12.") || shoulder.contains("-12."), "{shoulder}");
+}

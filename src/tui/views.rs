@@ -72,11 +72,15 @@ pub enum CurveView {
     Ankle,
     /// Heel rise (foot–ground angle, deg).
     HeelRise,
+    /// Shoulder flexion of the right arm (deg), as played.
+    Shoulder,
+    /// Elbow flexion of the right arm (deg), as played.
+    Elbow,
 }
 
 impl CurveView {
     /// Every chart, in `c` order.
-    pub const ALL: [CurveView; 11] = [
+    pub const ALL: [CurveView; 13] = [
         CurveView::PelvisRotation,
         CurveView::PelvisObliquity,
         CurveView::PelvisTilt,
@@ -88,6 +92,8 @@ impl CurveView {
         CurveView::SwingHeelHeight,
         CurveView::Ankle,
         CurveView::HeelRise,
+        CurveView::Shoulder,
+        CurveView::Elbow,
     ];
 
     /// Chart title with its unit.
@@ -105,6 +111,8 @@ impl CurveView {
             CurveView::SwingHeelHeight => "swing heel height (cm)",
             CurveView::Ankle => "swing foot pitch (deg)",
             CurveView::HeelRise => "heel rise (deg)",
+            CurveView::Shoulder => "shoulder flexion, right (deg)",
+            CurveView::Elbow => "elbow flexion, right (deg)",
         }
     }
 }

@@ -75,6 +75,8 @@ pub fn curve_data(app: &App, view: CurveView) -> CurveData {
         CurveView::PelvisObliquity => live(CurveName::PelvisObliquity, deg, "right cycle (0-1)"),
         CurveView::PelvisTilt => live(CurveName::PelvisTilt, deg, "right cycle (0-1)"),
         CurveView::PelvisLateral => live(CurveName::PelvisLateral, 100.0, "right cycle (0-1)"),
+        CurveView::Shoulder => live(CurveName::Shoulder, deg, "right cycle (0-1)"),
+        CurveView::Elbow => live(CurveName::Elbow, deg, "right cycle (0-1)"),
         CurveView::PelvisVertical | CurveView::PelvisForward => {
             let names: &[CurveName] = if view == CurveView::PelvisVertical {
                 &[CurveName::PelvisVertical]
