@@ -56,3 +56,26 @@ fn the_stick_figure_is_drawn_at_one_metre_per_metre_and_steps_are_whole_numbers(
     assert!(!texts.iter().any(|t| t == "2.0" || t == "4.0"), "steps are whole numbers: {texts:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_ik_plot_has_distinct_ticks_and_says_exact_for_an_exact_solver() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-ik-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report(&dir);
+    let svg = std::fs::read_to_string(dir.join("plots/ik.svg")).unwrap();
+    // The default walk's solver is the analytic one alone: its error is zero to rounding.
+    assert!(svg.contains("exact (every solve within 1 nm)"), "the caption says the solver is exact");
+    let labels = numeric_labels(&svg);
+    // The error axis's labels (left, upper half): no tick label repeated.
+    let mut error_ticks: Vec<String> =
+        labels.iter().filter(|l| l.0 < 120.0 && l.1 < 480.0).map(|l| l.3.clone()).collect();
+    let count = error_ticks.len();
+    error_ticks.sort();
+    error_ticks.dedup();
+    assert!(
+        count >= 3 && error_ticks.len() == count,
+        "repeated tick labels: {count} labels, {} distinct",
+        error_ticks.len()
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

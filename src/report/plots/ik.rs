@@ -29,10 +29,19 @@ pub(super) fn ik<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, targets: &[Ik
     let iterations: Vec<Vec<(f64, f64)>> =
         runs.iter().map(|r| per_frame(targets, r, |x| f64::from(x.answer.iterations.max(1)))).collect();
     // Headroom above the data for the legend.
-    let error_max = errors.iter().flatten().map(|p| p.1).fold(0.0, f64::max).max(1e-3) * 1.5;
+    let worst_error = errors.iter().flatten().map(|p| p.1).fold(0.0, f64::max);
+    let error_max = worst_error.max(1e-3) * 1.5;
+    // As many decimals as make the ticks (about five over the axis) distinct.
+    let decimals = (-(error_max / 5.0).log10()).ceil().max(0.0) as usize;
+    // An exact solver draws a flat line at zero: say so in words, where a reader looks.
+    let error_caption = if worst_error < 1e-6 {
+        "ankle position error: exact (every solve within 1 nm)".to_string()
+    } else {
+        "ankle position error".to_string()
+    };
     let iteration_max = iterations.iter().flatten().map(|p| p.1).fold(1.0, f64::max) * 8.0;
     for (area, caption, y_desc, series, log) in [
-        (&top, "ankle position error", "error (mm)", &errors, false),
+        (&top, error_caption.as_str(), "error (mm)", &errors, false),
         (&bottom, "iterations per solve", "iterations (log scale)", &iterations, true),
     ] {
         let mut builder = ChartBuilder::on(area);
@@ -44,7 +53,7 @@ pub(super) fn ik<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, targets: &[Ik
                     .configure_mesh()
                     .x_desc("time (s)")
                     .y_desc(y_desc)
-                    .y_label_formatter(&|v| if log { format!("{v:.0}") } else { format!("{v:.3}") })
+                    .y_label_formatter(&|v| if log { format!("{v:.0}") } else { format!("{v:.decimals$}") })
                     .label_style((FONT, 18))
                     .axis_desc_style((FONT, 20))
                     .draw()
