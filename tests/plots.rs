@@ -79,3 +79,23 @@ fn the_ik_plot_has_distinct_ticks_and_says_exact_for_an_exact_solver() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn cycle_charts_keep_their_last_label_inside_and_no_legend_covers_a_lone_curve() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-cycle-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report(&dir);
+    for plot in ["pelvis", "joints"] {
+        let svg = std::fs::read_to_string(dir.join(format!("plots/{plot}.svg"))).unwrap();
+        let hundreds: Vec<f64> = numeric_labels(&svg).iter().filter(|l| l.3 == "100").map(|l| l.0).collect();
+        assert!(!hundreds.is_empty());
+        // Centred text of three digits at 20 px: about 17 px each side of x.
+        assert!(hundreds.iter().all(|x| x + 20.0 <= 1600.0), "{plot}: a '100' runs off the image at x {hundreds:?}");
+    }
+    // One walk: the pelvis curves carry no legend box over them (the walk's name is the
+    // report's own); the joints plot keeps its right / left legend, above the data.
+    let pelvis = std::fs::read_to_string(dir.join("plots/pelvis.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&pelvis).unwrap();
+    assert!(!doc.descendants().any(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.trim() == "default")));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

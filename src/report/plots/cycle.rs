@@ -17,9 +17,15 @@ fn cycle_chart<DB: DrawingBackend>(
 ) -> Res {
     let all: Vec<&[(f64, f64)]> = lines.iter().flat_map(|(_, _, c)| [c.mean.as_slice(), c.band.as_slice()]).collect();
     let y = y_range(&all);
+    // Room above the data for the legend, so it never covers a curve; a lone line needs no
+    // legend (the figure's title and summary.md name the walk).
+    let legend = lines.len() > 1;
+    let y = if legend { y.start..y.end + 0.3 * (y.end - y.start) } else { y };
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FONT, 30))
         .margin(12)
+        // The last x label ("100") is centred on the axis's end: room for its right half.
+        .margin_right(28)
         .x_label_area_size(55)
         .y_label_area_size(80)
         .build_cartesian_2d(0f64..100f64, y.clone())
@@ -57,14 +63,16 @@ fn cycle_chart<DB: DrawingBackend>(
             )))
             .map_err(err)?;
     }
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 20))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)?;
+    if legend {
+        chart
+            .configure_series_labels()
+            .label_font((FONT, 20))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(err)?;
+    }
     Ok(())
 }
 
