@@ -177,7 +177,8 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
         .x_axis(Axis::default().title(data.x_label).bounds(x).labels([label(x[0]), label(x[1])]))
         .y_axis(Axis::default().bounds(y).labels([label(y[0]), label(y[1])]))
         .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
-        .hidden_legend_constraints((Constraint::Percentage(60), Constraint::Percentage(60)));
+        // The legend only where it covers little of the chart: in small charts it hid the data.
+        .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
     f.render_widget(chart, inner);
 }
 

@@ -230,7 +230,7 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
             .labels(["0".to_string(), format!("{span:.2}")]),
     )
     .y_axis(Axis::default().bounds(y).labels([format!("{:.0}", y[0]), format!("{:.0}", y[1])]))
-    .hidden_legend_constraints((Constraint::Percentage(50), Constraint::Percentage(50)));
+    .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
     f.render_widget(chart, chart_area);
 }
 
