@@ -157,7 +157,7 @@ pub enum Command {
         /// Also write the result as JUnit XML (one testcase per config) to FILE
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
-        /// Tolerances: a TOML file with a [tolerance] table (kinds like angles_deg, or figure keys)
+        /// Tolerances: a TOML file with a `[tolerance]` table (kinds like angles_deg, or figure keys)
         #[arg(long, value_name = "FILE")]
         tolerance: Option<PathBuf>,
         /// For each config that moved, write DIR/STEM.png (its config's file stem): stored against new joint curves
