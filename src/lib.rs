@@ -19,6 +19,7 @@ pub mod cli;
 pub mod config;
 pub mod error;
 pub mod model;
+pub mod normative;
 pub mod output;
 pub mod report;
 pub mod snapshot;

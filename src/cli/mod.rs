@@ -8,6 +8,7 @@ use crate::output::{self, FileTarget, joint_table};
 use clap::{Parser, Subcommand};
 
 mod common;
+mod compare;
 mod ik;
 mod optimise;
 mod snapshot;
@@ -167,6 +168,20 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// The walk's joint curves against measured human gait (mean +- SD every 1 % of the cycle)
+    Compare {
+        /// Config file.
+        config: PathBuf,
+        /// A reference CSV in the built-in file's columns [default: Fukuchi et al. 2018, data/normative/]
+        #[arg(long, value_name = "FILE")]
+        reference: Option<PathBuf>,
+        /// One JSON object a line, one per curve
+        #[arg(long)]
+        json: bool,
+        /// Override a key: --set walk.speed_mps=1.245 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// List the presets: name, then a short description
     Presets,
     /// Print a complete, commented config
@@ -237,6 +252,9 @@ pub fn run(cli: Cli) -> u8 {
                 sets: &sets,
             }),
         ),
+        Some(Command::Compare { config, reference, json, sets }) => {
+            ("compare", compare::run(&config, reference.as_deref(), json, &sets))
+        }
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));

@@ -1,0 +1,75 @@
+//! `gaitlab compare`: the walk's joint curves against measured human gait, as a table or JSON
+//! lines.
+
+use super::common::stdout_written;
+use crate::config;
+use crate::error::Result;
+use crate::normative::{self, Comparison, Reference};
+use std::io::{self, Write};
+use std::path::Path;
+
+pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[String]) -> Result<()> {
+    let params = config::load(path, sets)?;
+    let (reference, source) = match reference {
+        Some(file) => {
+            let text = config::read_source(file)?;
+            (Reference::parse(&text, &file.display().to_string())?, file.display().to_string())
+        }
+        None => (
+            Reference::parse(normative::BUILT_IN, "built-in reference")?,
+            "Fukuchi, Fukuchi & Duarte 2018 (24 young adults, treadmill, CC BY 4.0)".to_string(),
+        ),
+    };
+    let comparison = normative::compare(path, &params, &reference)?;
+    let stdout = io::stdout();
+    let mut out = io::BufWriter::new(stdout.lock());
+    let written =
+        if json { write_json(&mut out, &comparison) } else { write_table(&mut out, path, &source, &comparison) };
+    stdout_written(written.and_then(|()| out.flush()))
+}
+
+fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -> io::Result<()> {
+    writeln!(
+        out,
+        "# {} at {:.3} m/s against {source} at {:.3} m/s; right gait cycle, every 2 %",
+        path.display(),
+        c.speed_mps,
+        c.reference_speed_mps
+    )?;
+    writeln!(
+        out,
+        "# deviation = walk - reference; outside = share of the cycle beyond mean +- 1 SD; * shape only (means removed)"
+    )?;
+    writeln!(
+        out,
+        "{:<17} {:>7} {:>9} {:>5} {:>8}  {:>15} {:>15}  {:>15} {:>15}",
+        "curve", "rms_deg", "max_dev", "at_%", "outside%", "walk max @%", "ref max @%", "walk min @%", "ref min @%"
+    )?;
+    let at = |(v, p): (f64, f64)| format!("{v:.1} @{p:.0}");
+    for k in &c.curves {
+        let name = if k.shape_only { format!("{}*", k.curve) } else { k.curve.clone() };
+        writeln!(
+            out,
+            "{name:<17} {:>7.2} {:>9.2} {:>5.0} {:>8.0}  {:>15} {:>15}  {:>15} {:>15}",
+            k.rms_deg,
+            k.max_deviation_deg,
+            k.at_pct,
+            k.outside_1sd_pct,
+            at(k.walk_max),
+            at(k.reference_max),
+            at(k.walk_min),
+            at(k.reference_min)
+        )?;
+    }
+    Ok(())
+}
+
+fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
+    for k in &c.curves {
+        let mut line = serde_json::to_value(k).map_err(io::Error::other)?;
+        line["speed_mps"] = c.speed_mps.into();
+        line["reference_speed_mps"] = c.reference_speed_mps.into();
+        writeln!(out, "{line}")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,169 @@
+//! A walk against measured human gait: the walk's mean joint curves over the right gait cycle
+//! set beside a normative reference (mean and between-subject SD every 1 % of the cycle).
+//!
+//! The built-in reference is `data/normative/normative_adult_walking.csv` (Fukuchi, Fukuchi &
+//! Duarte 2018, CC BY 4.0; source, licence and derivation beside it); a user's file with the
+//! same columns can replace it. Pelvic tilt is compared as a shape (both means removed):
+//! the measured tilt carries a ~10° offset that depends on the marker model, the walk's tilt
+//! is a swing about its posture.
+
+use crate::error::{Error, Result};
+use crate::model::params::WalkParams;
+use crate::snapshot::measure;
+use std::path::Path;
+
+/// The built-in reference's text.
+pub const BUILT_IN: &str = include_str!("../data/normative/normative_adult_walking.csv");
+
+/// The curves compared: (reference column stem, the walk's curve, compared as a shape).
+const COMPARED: [(&str, &str, bool); 6] = [
+    ("hip_flex", "hip_flex_r_deg", false),
+    ("knee_flex", "knee_flex_r_deg", false),
+    ("ankle_dorsi", "ankle_dorsi_r_deg", false),
+    ("pelvis_tilt_ant", "pelvis_tilt_deg", true),
+    ("pelvis_obliq_up", "pelvis_obliquity_deg", false),
+    ("pelvis_rot_fwd", "pelvis_rotation_deg", false),
+];
+
+/// A normative reference: per curve stem, mean and SD at 0..=100 % of the cycle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reference {
+    /// The reference's walking speed (m/s), from its `speed_m_s` column.
+    pub speed_mps: f64,
+    /// (stem, mean, sd), 101 points each.
+    pub curves: Vec<(String, Vec<f64>, Vec<f64>)>,
+}
+
+impl Reference {
+    /// Parses the CSV format of the built-in file (`#` comments, a header, one row a percent).
+    pub fn parse(text: &str, label: &str) -> Result<Reference> {
+        let bad = |line: usize, message: String| Error::Usage(format!("{label}:{line}: {message}"));
+        let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'));
+        let (header_line, header) = rows.next().ok_or_else(|| bad(1, "no header".into()))?;
+        let columns: Vec<&str> = header.split(',').map(str::trim).collect();
+        let column = |name: &str| {
+            columns
+                .iter()
+                .position(|c| *c == name)
+                .ok_or_else(|| bad(header_line + 1, format!("no column `{name}` (columns: {})", columns.join(", "))))
+        };
+        let speed = column("speed_m_s")?;
+        let mut table: Vec<Vec<f64>> = Vec::with_capacity(101);
+        for (n, line) in rows {
+            let values: std::result::Result<Vec<f64>, _> = line.split(',').map(|v| v.trim().parse::<f64>()).collect();
+            let values = values.map_err(|e| bad(n + 1, format!("not a number: {e}")))?;
+            if values.len() != columns.len() || values.iter().any(|v| !v.is_finite()) {
+                return Err(bad(n + 1, format!("expected {} finite numbers", columns.len())));
+            }
+            table.push(values);
+        }
+        if table.len() != 101 {
+            return Err(bad(header_line + 1, format!("{} rows; expected 101 (0 to 100 % of the cycle)", table.len())));
+        }
+        let mut curves = Vec::new();
+        for (stem, _, _) in COMPARED {
+            let (m, s) = (column(&format!("{stem}_mean_deg"))?, column(&format!("{stem}_sd_deg"))?);
+            curves.push((stem.to_string(), table.iter().map(|r| r[m]).collect(), table.iter().map(|r| r[s]).collect()));
+        }
+        Ok(Reference { speed_mps: table[0][speed], curves })
+    }
+}
+
+/// One curve of the walk against the reference.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct CurveComparison {
+    /// The reference's name for it.
+    pub curve: String,
+    /// Compared as a shape (both means removed).
+    pub shape_only: bool,
+    /// Root-mean-square difference over the cycle (deg).
+    pub rms_deg: f64,
+    /// Largest difference, walk minus reference (deg), and where (% of the cycle).
+    pub max_deviation_deg: f64,
+    /// Where the largest difference is (% of the cycle).
+    pub at_pct: f64,
+    /// Share of the cycle where the walk is outside the reference's mean ± 1 SD (%).
+    pub outside_1sd_pct: f64,
+    /// The walk's and the reference's largest value and where (deg, %).
+    pub walk_max: (f64, f64),
+    /// See `walk_max`.
+    pub reference_max: (f64, f64),
+    /// The walk's and the reference's smallest value and where (deg, %).
+    pub walk_min: (f64, f64),
+    /// See `walk_min`.
+    pub reference_min: (f64, f64),
+}
+
+/// A walk against a reference.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Comparison {
+    /// The walk's speed (m/s).
+    pub speed_mps: f64,
+    /// The reference's speed (m/s).
+    pub reference_speed_mps: f64,
+    /// Curve by curve.
+    pub curves: Vec<CurveComparison>,
+}
+
+fn extreme(points: &[(f64, f64)], larger: bool) -> (f64, f64) {
+    let pick = |a: (f64, f64), b: (f64, f64)| if (b.0 > a.0) == larger && b.0 != a.0 { b } else { a };
+    points.iter().copied().fold(points[0], pick)
+}
+
+/// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
+/// every 2 % of the right gait cycle.
+pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Result<Comparison> {
+    let walk = measure::measure(path, params)?;
+    let speed_mps = walk.summary.iter().find(|(k, _)| k == "speed_mps").map_or(f64::NAN, |(_, v)| *v);
+    let mut curves = Vec::new();
+    for ((stem, name, shape_only), (_, mean, sd)) in COMPARED.iter().zip(&reference.curves) {
+        let ours = &walk.curves.iter().find(|(n, _)| n == name).expect("a measured curve").1;
+        // The walk's points are every 2 %: the reference's rows 0, 2, … 100.
+        let theirs: Vec<(f64, f64)> = (0..ours.len()).map(|i| (mean[2 * i], sd[2 * i])).collect();
+        let offset = |v: &[f64]| if *shape_only { v.iter().sum::<f64>() / v.len() as f64 } else { 0.0 };
+        let (ours_off, theirs_off) = (offset(ours), offset(&theirs.iter().map(|t| t.0).collect::<Vec<_>>()));
+        let diffs: Vec<f64> = ours.iter().zip(&theirs).map(|(o, t)| (o - ours_off) - (t.0 - theirs_off)).collect();
+        let rms_deg = (diffs.iter().map(|d| d * d).sum::<f64>() / diffs.len() as f64).sqrt();
+        let (at, max_dev) =
+            diffs.iter().enumerate().fold((0, 0.0_f64), |a, (i, d)| if d.abs() > a.1.abs() { (i, *d) } else { a });
+        let outside = diffs.iter().zip(&theirs).filter(|(d, t)| d.abs() > t.1).count();
+        let pct = |i: usize| 2.0 * i as f64;
+        // Extremes as compared: a shape's without its mean.
+        let ours_pts: Vec<(f64, f64)> = ours.iter().enumerate().map(|(i, v)| (v - ours_off, pct(i))).collect();
+        let theirs_pts: Vec<(f64, f64)> = theirs.iter().enumerate().map(|(i, t)| (t.0 - theirs_off, pct(i))).collect();
+        curves.push(CurveComparison {
+            curve: (*stem).to_string(),
+            shape_only: *shape_only,
+            rms_deg,
+            max_deviation_deg: max_dev,
+            at_pct: pct(at),
+            outside_1sd_pct: 100.0 * outside as f64 / diffs.len() as f64,
+            walk_max: extreme(&ours_pts, true),
+            reference_max: extreme(&theirs_pts, true),
+            walk_min: extreme(&ours_pts, false),
+            reference_min: extreme(&theirs_pts, false),
+        });
+    }
+    Ok(Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_built_in_reference_parses_and_a_bad_file_is_located() {
+        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
+        assert_eq!(r.curves.len(), 6);
+        assert!((r.speed_mps - 1.245).abs() < 1e-9);
+        let knee = &r.curves[1];
+        assert_eq!(knee.0, "knee_flex");
+        assert!((knee.1[74] - 62.26).abs() < 1e-9);
+        let e = Reference::parse("pct_cycle,speed_m_s\n0,1\n", "mine.csv").unwrap_err().to_string();
+        assert!(e.starts_with("mine.csv:") && e.contains("rows; expected 101"), "{e}");
+        let mut short = BUILT_IN.replace("hip_flex_sd_deg", "hip_sd");
+        assert!(Reference::parse(&short, "x.csv").unwrap_err().to_string().contains("no column `hip_flex_sd_deg`"));
+        short = BUILT_IN.replacen("0,1.245,29.87", "0,1.245,nan", 1);
+        assert!(Reference::parse(&short, "x.csv").unwrap_err().to_string().contains("finite"));
+    }
+}

@@ -1,0 +1,85 @@
+//! `gaitlab compare`: the walk against a normative reference.
+
+use std::process::Command;
+
+const BIN: &str = env!("CARGO_BIN_EXE_gaitlab");
+
+fn gaitlab(args: &[&str]) -> std::process::Output {
+    Command::new(BIN).args(args).current_dir(env!("CARGO_MANIFEST_DIR")).output().unwrap()
+}
+
+#[test]
+fn the_default_walk_against_the_built_in_norms() {
+    let o = gaitlab(&["compare", "configs/default.toml"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let table = String::from_utf8_lossy(&o.stdout);
+    for curve in ["hip_flex", "knee_flex", "ankle_dorsi", "pelvis_tilt_ant*", "pelvis_obliq_up", "pelvis_rot_fwd"] {
+        assert!(table.lines().any(|l| l.starts_with(curve)), "{curve} missing:\n{table}");
+    }
+    assert!(table.contains("Fukuchi"), "the reference is named");
+    let o = gaitlab(&["compare", "configs/default.toml", "--json"]);
+    let lines: Vec<serde_json::Value> =
+        String::from_utf8_lossy(&o.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 6);
+    for l in &lines {
+        let rms = l["rms_deg"].as_f64().unwrap();
+        assert!(rms.is_finite() && rms >= 0.0);
+        assert!((0.0..=100.0).contains(&l["outside_1sd_pct"].as_f64().unwrap()));
+    }
+    // The knee's swing peak is where the norms put it, within a few percent of the cycle.
+    let knee = lines.iter().find(|l| l["curve"] == "knee_flex").unwrap();
+    let (walk_at, ref_at) = (knee["walk_max"][1].as_f64().unwrap(), knee["reference_max"][1].as_f64().unwrap());
+    assert!((walk_at - ref_at).abs() <= 6.0, "knee peak at {walk_at} % against {ref_at} %");
+}
+
+/// A reference made of the walk's own curves gives no deviation: the comparison lines the
+/// cycles up point for point.
+#[test]
+fn the_walk_against_itself_deviates_by_nothing() {
+    let params = gaitlab::config::load(std::path::Path::new("configs/default.toml"), &[]).unwrap();
+    let path = std::path::Path::new("configs/default.toml");
+    let walk = gaitlab::snapshot::measure::measure(path, &params).unwrap();
+    let curve = |name: &str| walk.curves.iter().find(|(n, _)| n == name).unwrap().1.clone();
+    let stems = [
+        ("hip_flex", "hip_flex_r_deg"),
+        ("knee_flex", "knee_flex_r_deg"),
+        ("ankle_dorsi", "ankle_dorsi_r_deg"),
+        ("pelvis_tilt_ant", "pelvis_tilt_deg"),
+        ("pelvis_obliq_up", "pelvis_obliquity_deg"),
+        ("pelvis_rot_fwd", "pelvis_rotation_deg"),
+    ];
+    let mut csv = String::from("pct_cycle,speed_m_s");
+    for (stem, _) in stems {
+        csv.push_str(&format!(",{stem}_mean_deg,{stem}_sd_deg"));
+    }
+    csv.push('\n');
+    for pct in 0..=100usize {
+        csv.push_str(&format!("{pct},1.3"));
+        for (_, name) in stems {
+            let c = curve(name);
+            // Every 2 % from the walk; the odd rows halfway (compare reads the even ones).
+            let v = if pct % 2 == 0 { c[pct / 2] } else { 0.5 * (c[pct / 2] + c[pct / 2 + 1]) };
+            csv.push_str(&format!(",{v},1.0"));
+        }
+        csv.push('\n');
+    }
+    let reference = gaitlab::normative::Reference::parse(&csv, "self.csv").unwrap();
+    let c = gaitlab::normative::compare(path, &params, &reference).unwrap();
+    for k in &c.curves {
+        assert!(k.rms_deg < 1e-9, "{}: {}", k.curve, k.rms_deg);
+        assert_eq!(k.outside_1sd_pct, 0.0);
+    }
+}
+
+#[test]
+fn a_bad_reference_is_refused_with_its_place() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-compare-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("ref.csv");
+    std::fs::write(&bad, "pct_cycle,speed_m_s,hip_flex_mean_deg\n0,1.2,oops\n").unwrap();
+    let o = gaitlab(&["compare", "configs/default.toml", "--reference", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("ref.csv:2:") && e.contains("not a number"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
