@@ -243,3 +243,59 @@ fn the_walk_honours_the_analytic_solvers_twist_and_soften() {
     assert!(soft.reach_failures > 0, "the stance leg runs past 90 % of its reach");
     assert!(soft.frames.iter().all(|f| f.legs.iter().all(|l| l.knee.is_finite())));
 }
+
+#[test]
+fn under_limits_from_cold_fabrik_ccd_and_dls_reach_every_random_target_any_of_them_reaches() {
+    use gaitlab::analysis::ik::{random_targets, run_solver_from};
+    use gaitlab::model::ik::{LegAngles, LegChain};
+    // The leg; limits on, every solve from the rest pose.
+    let (thigh, shank) = (0.429, 0.431);
+    let settings = IkSettings::default();
+    assert!(settings.limits.enabled);
+    let targets = random_targets(2000, 19, thigh, shank, &settings.limits);
+    let chain = LegChain { thigh, shank, limits: settings.limits };
+    let rest_ankle = chain.forward(LegAngles::rest(), 1.0).ankle;
+    let solvers = [IkSolverKind::Fabrik, IkSolverKind::Ccd, IkSolverKind::JacobianDls];
+    let runs = solvers.map(|solver| run_solver_from(&targets, solver, &settings, (thigh, shank), true));
+    let within = |x: &gaitlab::analysis::ik::IkSample| x.answer.reached && x.limit_excess_deg <= 1e-9;
+    let mut reached_by_any = 0;
+    let mut misses = Vec::new();
+    for (i, t) in targets.iter().enumerate() {
+        let any = runs.iter().any(|r| within(&r.samples[i]));
+        reached_by_any += usize::from(any);
+        // The reference is the leg frame's x: leg-frame offsets are world offsets.
+        let start_error = (t.question.target - t.question.hip).distance(rest_ankle);
+        for (solver, run) in solvers.iter().zip(&runs) {
+            let x = &run.samples[i];
+            let name = solver.name();
+            assert!(
+                x.limit_excess_deg <= 1e-9,
+                "{name} target {i}: {:?} out by {} deg",
+                x.answer.angles,
+                x.limit_excess_deg
+            );
+            // Never further than it started, unless within the tolerance (where the swivel may
+            // be traded for a fraction of it).
+            let error = x.answer.position_error;
+            assert!(
+                error <= start_error.max(settings.tolerance) + 1e-12,
+                "{name} target {i}: {error} from {start_error}"
+            );
+            if any && !within(x) {
+                misses.push(format!(
+                    "{name} target {i}: {} mm, {} iterations, {:?}",
+                    error * 1e3,
+                    x.answer.iterations,
+                    t.question.target - t.question.hip
+                ));
+            }
+        }
+    }
+    for (solver, run) in solvers.iter().zip(&runs) {
+        let s = run.summary(&targets);
+        eprintln!("{}: reached {}/{}, iterations mean {:.1}", solver.name(), s.reached, s.solves, s.iterations_mean);
+    }
+    eprintln!("reached by any: {reached_by_any}/{}", targets.len());
+    assert!(misses.is_empty(), "{} misses of targets another solver reaches:\n{}", misses.len(), misses.join("\n"));
+    assert!(reached_by_any >= targets.len() * 99 / 100, "{reached_by_any}");
+}

@@ -20,9 +20,11 @@
 pub use crate::analysis::recording::IkTarget;
 use crate::analysis::recording::{Keep, record};
 use crate::model::body::Side;
-use crate::model::ik::{IkAnswer, IkSettings, IkSolverKind, LegSolver};
+use crate::model::ik::{IkAnswer, IkQuestion, IkSettings, IkSolverKind, JointLimits, LegAngles, LegChain, LegSolver};
 use crate::model::params::WalkParams;
+use crate::model::terrain::SplitMix64;
 use crate::model::walk::ModelError;
+use glam::DVec3;
 use std::time::Instant;
 
 /// Runs the walk (analytic IK) and keeps both legs' IK questions of every frame.
@@ -31,6 +33,29 @@ pub fn collect_targets(params: &WalkParams, cycles: f64, fps: f64) -> Result<Vec
     reference.ik.solver = IkSolverKind::Analytic;
     let keep = Keep { ik_targets: true, ..Keep::default() };
     Ok(record(&reference, cycles, fps, keep)?.ik_targets)
+}
+
+/// A standing right hip (m): what `random_targets` places its targets around.
+pub const STANDING_HIP: DVec3 = DVec3::new(0.0, 0.9, 0.09);
+
+/// `n` targets for the right leg of a standing hip ([`STANDING_HIP`], knee reference
+/// forward), each the ankle of a pose drawn uniformly within `limits`' ranges (whether or not
+/// they are enabled), so every one is reachable within them. The same `seed` gives the same
+/// targets; frames count the targets, all at time 0.
+#[must_use]
+pub fn random_targets(n: usize, seed: u64, thigh: f64, shank: f64, limits: &JointLimits) -> Vec<IkTarget> {
+    let chain = LegChain { thigh, shank, limits: *limits };
+    let mut rng = SplitMix64::new(seed);
+    (0..n as u64)
+        .map(|frame| {
+            let angles = limits.ranges().map(|(lo, hi)| lo + (hi - lo) * 0.5 * (rng.next_signed_unit() + 1.0));
+            // The reference is the leg frame's x, so leg-frame offsets are world offsets.
+            let ankle = chain.forward(LegAngles::from_array(angles), 1.0).ankle;
+            let question =
+                IkQuestion { hip: STANDING_HIP, target: STANDING_HIP + ankle, reference: DVec3::X, side_sign: 1.0 };
+            IkTarget { frame, time_s: 0.0, side: Side::Right, question }
+        })
+        .collect()
 }
 
 /// One solve of one target.
@@ -97,7 +122,8 @@ pub struct IkSummary {
     pub(crate) ankle_jump_mean_mm: f64,
 }
 
-/// Solves every target with `solver` under `settings` (its own solver field is replaced).
+/// Solves every target with `solver` under `settings` (its own solver field is replaced),
+/// each leg warm-started from its previous answer.
 #[must_use]
 pub fn run_solver(
     targets: &[IkTarget],
@@ -105,6 +131,18 @@ pub fn run_solver(
     settings: &IkSettings,
     thigh: f64,
     shank: f64,
+) -> SolverRun {
+    run_solver_from(targets, solver, settings, (thigh, shank), false)
+}
+
+/// [`run_solver`], every solve started cold (from the rest pose) when `cold`.
+#[must_use]
+pub fn run_solver_from(
+    targets: &[IkTarget],
+    solver: IkSolverKind,
+    settings: &IkSettings,
+    (thigh, shank): (f64, f64),
+    cold: bool,
 ) -> SolverRun {
     let mut settings = *settings;
     settings.solver = solver;
@@ -118,6 +156,9 @@ pub fn run_solver(
     let mut samples = Vec::with_capacity(targets.len());
     for t in targets {
         let i = t.side.index();
+        if cold {
+            legs[i].forget();
+        }
         let started = Instant::now();
         let answer = legs[i].solve(&t.question);
         let time_us = started.elapsed().as_secs_f64() * 1e6;

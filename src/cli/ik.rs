@@ -1,7 +1,7 @@
 //! `gaitlab ik`: every IK solver on the walk's own targets, side by side.
 
 use super::common::{in_range, stdout_written};
-use crate::analysis::ik::{IkSummary, collect_targets, run_solver};
+use crate::analysis::ik::{IkSummary, IkTarget, collect_targets, random_targets, run_solver_from};
 use crate::config;
 use crate::error::{Error, Result};
 use crate::model::ik::{IkSettings, IkSolverKind};
@@ -27,21 +27,65 @@ pub(crate) fn parse_solvers(list: &str) -> Result<Vec<IkSolverKind>, String> {
     Ok(solvers)
 }
 
+/// `--targets`: `walk`, or `random:N` with an optional `:SEED`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum TargetSet {
+    Walk,
+    Random { n: usize, seed: u64 },
+}
+
+/// Seed of `random:N` without one: the issue that asked for the set.
+const RANDOM_SEED: u64 = 19;
+
+/// The target set named by `--targets`, or a message saying what is accepted.
+pub(crate) fn parse_targets(spec: &str) -> Result<TargetSet, String> {
+    let usage = || format!("--targets {spec}: expected `walk` or `random:N[:SEED]` with N from 1 to 1000000");
+    if spec == "walk" {
+        return Ok(TargetSet::Walk);
+    }
+    let mut parts = spec.strip_prefix("random:").ok_or_else(usage)?.split(':');
+    let n: usize =
+        parts.next().and_then(|n| n.parse().ok()).filter(|n| (1..=1_000_000).contains(n)).ok_or_else(usage)?;
+    let seed = match parts.next() {
+        Some(seed) => seed.parse().map_err(|_| usage())?,
+        None => RANDOM_SEED,
+    };
+    if parts.next().is_some() {
+        return Err(usage());
+    }
+    Ok(TargetSet::Random { n, seed })
+}
+
 pub(super) fn run(
     path: &Path,
     solvers: Option<&str>,
     cycles: Option<u32>,
     fps: Option<f64>,
     json: bool,
+    target_set: Option<&str>,
     sets: &[String],
 ) -> Result<()> {
     let params = config::load(path, sets)?;
     let solvers = solvers.map_or_else(|| Ok(IkSolverKind::ALL.to_vec()), parse_solvers).map_err(Error::Usage)?;
+    let target_set = target_set.map_or(Ok(TargetSet::Walk), parse_targets).map_err(Error::Usage)?;
     let cycles = in_range("--cycles", cycles.unwrap_or(params.sim.cycles), 1..=10_000, "1 to 10000")?;
     let fps = in_range("--fps", fps.unwrap_or(params.sim.fps), 10.0..=1000.0, "10 to 1000")?;
-    let targets = collect_targets(&params, f64::from(cycles), fps)
-        .map_err(|source| Error::Walk { config: path.to_path_buf(), source })?;
     let r = params.resolve();
+    let (targets, cold, header): (Vec<IkTarget>, bool, String) = match target_set {
+        TargetSet::Walk => {
+            let targets = collect_targets(&params, f64::from(cycles), fps)
+                .map_err(|source| Error::Walk { config: path.to_path_buf(), source })?;
+            let header = format!("{} IK targets ({} cycles at {} fps, both legs)", targets.len(), cycles, fps);
+            (targets, false, header)
+        }
+        TargetSet::Random { n, seed } => {
+            let targets = random_targets(n, seed, r.dims.thigh, r.dims.shank, &r.ik.limits);
+            let header = format!(
+                "{n} random IK targets (right leg around a standing hip, reachable within the joint ranges, seed {seed}, each solved from rest)"
+            );
+            (targets, true, header)
+        }
+    };
     // The gradient solver takes seconds over a long walk: say what is running, on a terminal.
     let tty = io::stderr().is_terminal();
     let rows: Vec<(IkSolverKind, IkSummary)> = solvers
@@ -50,16 +94,13 @@ pub(super) fn run(
             if tty {
                 eprintln!("gaitlab ik: {} on {} targets", solver.name(), targets.len());
             }
-            (solver, run_solver(&targets, solver, &r.ik, r.dims.thigh, r.dims.shank).summary(&targets))
+            let run = run_solver_from(&targets, solver, &r.ik, (r.dims.thigh, r.dims.shank), cold);
+            (solver, run.summary(&targets))
         })
         .collect();
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
-    let written = if json {
-        write_json(&mut out, &rows)
-    } else {
-        write_tables(&mut out, path, &r.ik, targets.len(), cycles, fps, &rows)
-    };
+    let written = if json { write_json(&mut out, &rows) } else { write_tables(&mut out, path, &header, &r.ik, &rows) };
     stdout_written(written.and_then(|()| out.flush()))
 }
 
@@ -96,25 +137,14 @@ fn settings_line(solver: IkSolverKind, s: &IkSettings) -> String {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
 fn write_tables(
     out: &mut impl Write,
     path: &Path,
+    header: &str,
     settings: &IkSettings,
-    solves: usize,
-    cycles: u32,
-    fps: f64,
     rows: &[(IkSolverKind, IkSummary)],
 ) -> io::Result<()> {
-    writeln!(
-        out,
-        "# {}: {} IK targets ({} cycles at {} fps, both legs); the walk uses {}",
-        path.display(),
-        solves,
-        cycles,
-        fps,
-        settings.solver.name()
-    )?;
+    writeln!(out, "# {}: {header}; the walk uses {}", path.display(), settings.solver.name())?;
     for (solver, s) in rows {
         writeln!(out)?;
         writeln!(out, "{}: {}", solver.name(), settings_line(*solver, settings))?;

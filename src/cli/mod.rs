@@ -140,6 +140,9 @@ pub enum Command {
         /// One JSON object a line, one per solver
         #[arg(long)]
         json: bool,
+        /// Target set: `walk` (the walk's own, warm-started in frame order) or `random:N[:SEED]` (N seeded targets for the right leg around a standing hip, reachable within the joint ranges, each solved from rest) [default: walk]
+        #[arg(long, value_name = "SET")]
+        targets: Option<String>,
         /// Override a key: --set ik.limits=false (repeatable)
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
@@ -237,8 +240,8 @@ pub fn run(cli: Cli) -> u8 {
                 sets: &sets,
             }),
         ),
-        Some(Command::Ik { config, solvers, cycles, fps, json, sets }) => {
-            ("ik", ik::run(&config, solvers.as_deref(), cycles, fps, json, &sets))
+        Some(Command::Ik { config, solvers, cycles, fps, json, targets, sets }) => {
+            ("ik", ik::run(&config, solvers.as_deref(), cycles, fps, json, targets.as_deref(), &sets))
         }
         Some(Command::Snapshot { paths, update, json, junit, tolerance, plot, sets }) => (
             "snapshot",

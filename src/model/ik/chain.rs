@@ -137,16 +137,45 @@ impl IkQuestion {
         DQuat::from_rotation_y((-self.reference.z).atan2(self.reference.x))
     }
 
-    /// The target in the leg frame, hip at the origin.
+    /// The leg frame's axes: the same rotation as [`Self::frame`], built without
+    /// trigonometry. Every solve maps the target in and the joints out, and an atan2 and a
+    /// sin-cos each time would cost more than the analytic solve itself.
     #[must_use]
-    pub(crate) fn local_target(&self) -> DVec3 {
-        self.frame().inverse() * (self.target - self.hip)
+    pub(crate) fn leg_frame(&self) -> LegFrame {
+        let (x, z) = (self.reference.x, self.reference.z);
+        let n = (x * x + z * z).sqrt();
+        let (c, s) = if n > 0.0 { (x / n, z / n) } else { (1.0, 0.0) };
+        LegFrame { hip: self.hip, ex: DVec3::new(c, 0.0, s), ez: DVec3::new(-s, 0.0, c) }
     }
+}
 
-    /// A leg-frame point in the world.
+/// The leg frame in the world: the hip, and the frame's x (the horizontal reference) and z.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct LegFrame {
+    hip: DVec3,
+    ex: DVec3,
+    ez: DVec3,
+}
+
+impl LegFrame {
+    /// A world point in the leg frame.
     #[must_use]
-    pub(crate) fn to_world(self, local: DVec3) -> DVec3 {
-        self.hip + self.frame() * local
+    pub(crate) fn to_local(self, world: DVec3) -> DVec3 {
+        let d = world - self.hip;
+        DVec3::new(d.dot(self.ex), d.y, d.dot(self.ez))
+    }
+}
+
+/// `atan2(s, c)` for a point (s, c) on the unit circle, from an arcsine or an arccosine
+/// (whichever is well conditioned there): each is a fraction of atan2's cost, and every
+/// solve reads four angles.
+#[must_use]
+fn angle_of(s: f64, c: f64) -> f64 {
+    if s.abs() < 0.7 {
+        let a = s.clamp(-1.0, 1.0).asin();
+        if c >= 0.0 { a } else { std::f64::consts::PI.copysign(s) - a }
+    } else {
+        c.clamp(-1.0, 1.0).acos().copysign(s)
     }
 }
 
@@ -209,18 +238,36 @@ impl LegChain {
     /// Joint angles that put the knee and ankle where given (leg frame); the inverse of
     /// [`Self::forward`] for positions with the right bone lengths. Hip rotation is undefined
     /// with the knee straight; `previous_rot` is kept then.
+    ///
+    /// Four arcsines or arccosines and no other transcendental function: the swing's sines
+    /// and cosines are read off the thigh direction instead of being rebuilt from its angles
+    /// (this runs once per solve of every solver, the analytic one included).
     #[must_use]
     pub(crate) fn angles_from_positions(&self, pose: ChainPose, side_sign: f64, previous_rot: f64) -> LegAngles {
         let u = pose.knee.normalize_or(DVec3::NEG_Y);
         let hip_abd = (side_sign * u.z).clamp(-1.0, 1.0).asin();
-        let hip_flex = u.x.atan2(-u.y);
         let w = (pose.ankle - pose.knee).normalize_or(u);
-        let knee_flex = u.dot(w).clamp(-1.0, 1.0).acos();
+        let sin_knee = u.cross(w).length();
+        let knee_flex = angle_of(sin_knee, u.dot(w));
+        // The swing Rz(flexion)·Rx(x), x = −side·abduction, has the columns (cf, sf, 0),
+        // (−sf·cx, cf·cx, sx), (sf·sx, −cf·sx, cx), and the thigh is minus the second:
+        // sx = −u.z, and (sf, cf) = (u.x, −u.y) / cx.
+        let cx = (1.0 - u.z * u.z).max(0.0).sqrt();
+        let (hip_flex, sf, cf) = if cx > 1e-12 {
+            let (sf, cf) = (u.x / cx, -u.y / cx);
+            (angle_of(sf, cf), sf, cf)
+        } else {
+            let flex = u.x.atan2(-u.y);
+            let (sf, cf) = flex.sin_cos();
+            (flex, sf, cf)
+        };
+        let sx = -u.z;
         // The shank in the thigh's frame before the hip's axial rotation:
         // (−sin k·cos φ, −cos k, sin k·sin φ) with φ = side·rotation.
-        let swing = DQuat::from_euler(EulerRot::ZXY, hip_flex, -side_sign * hip_abd, 0.0);
-        let w_h = swing.inverse() * w;
-        let hip_rot = if knee_flex.sin() > 1e-9 { side_sign * w_h.z.atan2(-w_h.x) } else { previous_rot };
+        let w_x = cf * w.x + sf * w.y;
+        let w_z = sf * sx * w.x - cf * sx * w.y + cx * w.z;
+        let hip_rot =
+            if sin_knee > 1e-9 { side_sign * angle_of(w_z / sin_knee, -w_x / sin_knee) } else { previous_rot };
         LegAngles { hip_flex, hip_abd, hip_rot, knee_flex }
     }
 

@@ -118,7 +118,7 @@ pub fn solve(
             (best, best_cost) = (end, cost);
         }
     }
-    Iterated { angles: LegAngles::from_array(best.map(f64::to_radians)), iterations: steps }
+    Iterated { angles: LegAngles::from_array(best.map(f64::to_radians)), iterations: steps, pose: None }
 }
 
 /// Where random starting poses are drawn from (deg): the joint ranges, or plausible leg poses

@@ -16,6 +16,7 @@ pub mod iterate;
 pub mod jacobian;
 pub mod settings;
 pub mod solver;
+pub(crate) mod swivel;
 
 pub use analytic::{TwoBoneOptions, TwoBoneSolution, solve_two_bone, solve_two_bone_with};
 pub(crate) use analytic::{orthogonal_part, softened_distance};
