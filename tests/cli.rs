@@ -347,8 +347,8 @@ fn run_lengths_at_the_extremes_are_refused_with_the_range() {
         (&["optimise", "--steps", "0"], "valid: 1 to 100000"),
         (&["optimise", "--steps", "1000000000"], "valid: 1 to 100000"),
         (&["optimise", "--steps=-5"], "invalid value '-5'"),
-        (&["report", "--cycles", "2"], "valid: 3 to 1000"),
-        (&["report", "--cycles", "1000000000"], "valid: 3 to 1000"),
+        (&["report", "--cycles", "3"], "valid: 4 to 1000"),
+        (&["report", "--cycles", "1000000000"], "valid: 4 to 1000"),
         (&["ik", "--cycles", "0"], "valid: 1 to 10000"),
         (&["ik", "--cycles", "4294967296"], "invalid value '4294967296'"),
     ];
@@ -394,7 +394,7 @@ fn a_config_from_a_pipe_is_read_once() {
     let dir = temp_dir("pipe-config");
     let out = dir.join("r");
     let script = format!(
-        "exec {} report <(cat configs/default.toml) --cycles 3 --out {}",
+        "exec {} report <(cat configs/default.toml) --cycles 4 --out {}",
         env!("CARGO_BIN_EXE_gaitlab"),
         out.display()
     );

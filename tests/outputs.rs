@@ -118,7 +118,7 @@ fn out_dash_and_dev_stdout_are_standard_output() {
 fn a_file_as_the_report_folder_is_refused_and_kept() {
     let d = scratch("file-as-folder");
     fs::write(d.join("existing_file"), "my notes").unwrap();
-    let o = gaitlab(&["report", CONFIG, "--cycles", "3", "--out", "existing_file"], &d);
+    let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "existing_file"], &d);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("existing_file: is a regular file, not a folder"), "{}", stderr(&o));
     assert_eq!(fs::read_to_string(d.join("existing_file")).unwrap(), "my notes");
@@ -133,7 +133,7 @@ fn a_users_folder_is_never_replaced_but_a_previous_report_is() {
     fs::create_dir_all(thesis.join("figures")).unwrap();
     fs::write(thesis.join("main.tex"), "\\chapter{Walk}").unwrap();
     for extra in [&[][..], &["--force"][..]] {
-        let mut args = vec!["report", CONFIG, "--cycles", "3", "--out", "thesis"];
+        let mut args = vec!["report", CONFIG, "--cycles", "4", "--out", "thesis"];
         args.extend_from_slice(extra);
         let o = gaitlab(&args, &d);
         assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
@@ -142,7 +142,7 @@ fn a_users_folder_is_never_replaced_but_a_previous_report_is() {
         assert!(thesis.join("figures").is_dir());
     }
     // A report written there before is replaced by the next run, whole.
-    let o = gaitlab(&["report", CONFIG, "--cycles", "3", "--out", "r"], &d);
+    let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "r"], &d);
     assert!(o.status.success(), "{}", stderr(&o));
     let first = fs::read_to_string(d.join("r/summary.json")).unwrap();
     let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "r", "--set", "walk.speed_mps=1.1"], &d);
@@ -152,7 +152,7 @@ fn a_users_folder_is_never_replaced_but_a_previous_report_is() {
     assert!(leftovers(&d).is_empty(), "{:?}", leftovers(&d));
     // The user's notes inside a report make it theirs too: --force is asked for.
     fs::write(d.join("r/notes.md"), "keep").unwrap();
-    let o = gaitlab(&["report", CONFIG, "--cycles", "3", "--out", "r"], &d);
+    let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "r"], &d);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("also holds notes.md") && stderr(&o).contains("--force"), "{}", stderr(&o));
     assert_eq!(fs::read_to_string(d.join("r/notes.md")).unwrap(), "keep");
@@ -241,7 +241,7 @@ fn a_signal_mid_write_keeps_the_old_output_and_leaves_nothing_else() {
         assert!(leftovers(&d).is_empty(), "signal {signal}: {:?}", leftovers(&d));
     }
     // A report: the previous report stays whole and no partial folder is left.
-    let o = gaitlab(&["report", CONFIG, "--cycles", "3", "--out", "rep"], &d);
+    let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "rep"], &d);
     assert!(o.status.success(), "{}", stderr(&o));
     let before = fs::read_to_string(d.join("rep/summary.json")).unwrap();
     for signal in [libc::SIGTERM, libc::SIGINT] {
@@ -271,13 +271,13 @@ fn links_to_nothing_and_files_in_the_path_are_refused_before_the_walk() {
     let d = scratch("links");
     std::os::unix::fs::symlink("gone/away", d.join("dangling")).unwrap();
     for command in ["report", "simulate"] {
-        let o = gaitlab(&[command, CONFIG, "--cycles", "3", "--out", "dangling"], &d);
+        let o = gaitlab(&[command, CONFIG, "--cycles", "4", "--out", "dangling"], &d);
         assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
         assert!(stderr(&o).contains("a link to gone/away, which does not exist"), "{}", stderr(&o));
     }
     fs::write(d.join("plain"), "x").unwrap();
     for command in ["report", "simulate"] {
-        let o = gaitlab(&[command, CONFIG, "--cycles", "3", "--out", "plain/sub/out"], &d);
+        let o = gaitlab(&[command, CONFIG, "--cycles", "4", "--out", "plain/sub/out"], &d);
         assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
         assert!(stderr(&o).contains("plain is a regular file, not a folder"), "{}", stderr(&o));
     }
@@ -294,7 +294,7 @@ fn missing_parents_are_created_by_every_command() {
     let o = gaitlab(&["simulate", CONFIG, "--cycles", "1", "--out", "no/such/dir/x.csv"], &d);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(d.join("no/such/dir/x.csv").is_file());
-    let o = gaitlab(&["report", CONFIG, "--cycles", "3", "--out", "new/place/r"], &d);
+    let o = gaitlab(&["report", CONFIG, "--cycles", "4", "--out", "new/place/r"], &d);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(d.join("new/place/r/summary.json").is_file());
     fs::remove_dir_all(&d).unwrap();
@@ -327,7 +327,7 @@ fn a_full_disk_gives_a_clear_error_and_nothing_partial() {
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(stderr(&o).contains("cannot write") && stderr(&o).contains("x.csv"), "{}", stderr(&o));
     assert_eq!(fs::read_to_string(d.join("x.csv")).unwrap(), "previous");
-    let o = gaitlab_with_file_limit(&["report", CONFIG, "--cycles", "3", "--out", "rep"], &d, 64 * 1024);
+    let o = gaitlab_with_file_limit(&["report", CONFIG, "--cycles", "4", "--out", "rep"], &d, 64 * 1024);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(stderr(&o).contains("File too large"), "{}", stderr(&o));
     assert!(!d.join("rep").exists());

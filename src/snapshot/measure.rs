@@ -27,7 +27,7 @@ pub const POINTS: usize = 51;
 
 /// Gait cycles a snapshot may walk (the config's `sim.cycles`): the first is start-up, and a
 /// snapshot records every frame, as a report does.
-pub const CYCLES: std::ops::RangeInclusive<u32> = 3..=1000;
+pub const CYCLES: std::ops::RangeInclusive<u32> = 4..=1000;
 
 /// One config's figures as a snapshot file holds them (every number rounded as stored).
 #[derive(Clone, Debug, PartialEq)]

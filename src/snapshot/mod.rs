@@ -3,7 +3,7 @@
 //!
 //! - A config is a file, or every `*.toml` directly in a folder (sorted; `*.toml.recovery`
 //!   and `*.snap.json` are not configs).
-//! - The walk is the config's own (`sim.cycles`, 3 to 1000, at `sim.fps`, `--set` applied);
+//! - The walk is the config's own (`sim.cycles`, 4 to 1000, at `sim.fps`, `--set` applied);
 //!   the figures are the report's summary ([`crate::report::metrics::summarise`]) and the
 //!   mean over the steady cycles of hip, knee and ankle angles of both legs and the pelvis's
 //!   tilt, obliquity and rotation, at every 2 % of the right gait cycle ([`measure`]).

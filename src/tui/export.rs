@@ -38,7 +38,7 @@ impl Export {
         let out = out.to_path_buf();
         let params = params.clone();
         let source = source_text.to_string();
-        let cycles = params.sim.cycles.max(3);
+        let cycles = params.sim.cycles.max(4);
         let (tx, rx) = mpsc::channel();
         std::thread::spawn(move || {
             let input = crate::report::ReportInput {
