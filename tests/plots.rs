@@ -99,3 +99,18 @@ fn cycle_charts_keep_their_last_label_inside_and_no_legend_covers_a_lone_curve()
     assert!(!doc.descendants().any(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.trim() == "default")));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-norm-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report(&dir);
+    let svg = std::fs::read_to_string(dir.join("plots/joints.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let legends = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.contains("Fukuchi 2018")))
+        .count();
+    assert_eq!(legends, 3, "the normative band is named in the hip, knee and ankle charts");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

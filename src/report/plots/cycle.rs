@@ -126,12 +126,35 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
 
 /// Hip, knee and ankle angles: each leg over its own cycle, or with compared walks the
 /// right leg of each.
+/// The normative band's colour: grey, behind the walks.
+const NORM: RGBColor = RGBColor(120, 120, 120);
+
+/// The built-in normative reference's curve for `joint` ("hip", "knee", "ankle"): its mean
+/// and a mean +- 1 SD band over 0-100 % of the cycle.
+fn normative_cycle(joint: &str) -> Option<Cycle> {
+    let stem = match joint {
+        "hip" => "hip_flex",
+        "knee" => "knee_flex",
+        "ankle" => "ankle_dorsi",
+        _ => return None,
+    };
+    let reference = crate::normative::Reference::parse(crate::normative::BUILT_IN, "built-in").ok()?;
+    let (_, mean, sd) = reference.curves.iter().find(|(s, _, _)| s == stem)?;
+    let pct = |i: usize| i as f64;
+    let lo = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m - s));
+    let hi: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m + s)).collect();
+    Some(Cycle {
+        mean: mean.iter().enumerate().map(|(i, m)| (pct(i), *m)).collect(),
+        band: lo.chain(hi.into_iter().rev()).collect(),
+    })
+}
+
 pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let title = if walks.len() == 1 {
-        "Joint angles, each leg over its own gait cycle (mean and min-max band)"
+        "Joint angles, each leg over its own gait cycle (mean and min-max band; grey: measured adults)"
     } else {
-        "Joint angles of the right leg, each walk over its own gait cycle (mean and min-max band)"
+        "Joint angles of the right leg, each walk over its own cycle (min-max band; grey: measured adults)"
     };
     let root = root.titled(title, (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 3));
@@ -151,6 +174,10 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
             } else {
                 cycles.push((walk.clone(), PALETTE[k % PALETTE.len()], d.cycle(0, &|i| pick(&f[i].legs[0]))));
             }
+        }
+        // Measured adult walking behind the walk's curves: mean and +-1 SD.
+        if let Some(norm) = normative_cycle(name) {
+            cycles.insert(0, ("adults, Fukuchi 2018 (+-1 SD)".to_string(), NORM, norm));
         }
         let lines: Vec<(&str, RGBColor, &Cycle)> = cycles.iter().map(|(n, c, cy)| (n.as_str(), *c, cy)).collect();
         cycle_chart(area, name, unit, &lines, &walks[0].1.events)?;
