@@ -215,23 +215,7 @@ pub enum SearchMethod {
     Joint,
 }
 
-impl SearchMethod {
-    /// Every method, in the order the config documents them.
-    pub const ALL: [SearchMethod; <SearchMethod as strum::EnumCount>::COUNT] =
-        crate::model::variants::array(<SearchMethod as strum::VariantArray>::VARIANTS);
-
-    /// The config's name for it (`thesis`, `golden`, `brent`, `joint`).
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        self.into()
-    }
-
-    /// The method called `name` in a config.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<SearchMethod> {
-        name.parse().ok()
-    }
-}
+crate::model::variants::named_variants!(SearchMethod);
 
 /// How joint accelerations are summed into the cost.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

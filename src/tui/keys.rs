@@ -76,17 +76,7 @@ pub enum Action {
     Export,
 }
 
-impl Action {
-    /// Every action, in the order of its `[keys]` name table.
-    pub const ALL: [Action; <Action as strum::EnumCount>::COUNT] =
-        crate::model::variants::array(<Action as strum::VariantArray>::VARIANTS);
-
-    /// Its name in a config's `[keys]` table.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        self.into()
-    }
-}
+crate::model::variants::named_variants!(Action);
 
 /// The default bindings: key (as written in `[keys]`), action.
 pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[

@@ -14,7 +14,7 @@ use crate::model::ik::analytic::orthogonal_part;
 use crate::model::ik::chain::{ChainPose, LegAngles, LegChain, swivel_to_reference};
 use crate::model::ik::iterate::{Iterated, MIN_BEND, Stall, iterate, unlock_knee};
 use crate::model::ik::settings::IkSettings;
-use crate::model::ik::swivel::{into_limits, reach_then_turn, to_reference};
+use crate::model::ik::swivel::{into_limits, limited_else_turned, to_reference};
 use glam::{DQuat, DVec3};
 
 /// Solves for the ankle at `target` (leg frame) from `start`.
@@ -26,20 +26,7 @@ pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &I
     {
         return done;
     }
-    let limited = solve_within(chain, target, side, start, s);
-    let end = chain.forward(limited.angles, side).ankle.distance(target);
-    if !chain.limits.enabled || end <= s.tolerance {
-        return limited;
-    }
-    // Clamping after every step can pin the iteration against a limit off the target.
-    let free = |free: &LegChain| solve_within(free, target, side, start, s);
-    match reach_then_turn(chain, target, side, start, s, free) {
-        Some(mut turned) => {
-            turned.iterations += limited.iterations;
-            turned
-        }
-        None => limited,
-    }
+    limited_else_turned(chain, target, side, start, s, |c| solve_within(c, target, side, start, s))
 }
 
 /// The same sweeps on positions, the limits left out, the angles read once at the end. After

@@ -6,7 +6,7 @@
 use crate::model::ik::chain::{LegAngles, LegChain};
 use crate::model::ik::iterate::{Iterated, iterate};
 use crate::model::ik::settings::{IkSettings, JacobianVariant};
-use crate::model::ik::swivel::reach_then_turn;
+use crate::model::ik::swivel::limited_else_turned;
 use glam::{DMat4, DVec3, DVec4};
 
 /// Largest joint update per iteration (rad): keeps a near-singular step from flinging the leg.
@@ -24,20 +24,7 @@ fn task(chain: &LegChain, angles: LegAngles, side: f64, target: DVec3) -> DVec4 
 /// Solves for the ankle at `target` (leg frame) from `start`.
 #[must_use]
 pub fn solve(chain: &LegChain, target: DVec3, side: f64, start: LegAngles, s: &IkSettings) -> Iterated {
-    let limited = solve_within(chain, target, side, start, s);
-    let end = chain.forward(limited.angles, side).ankle.distance(target);
-    if !chain.limits.enabled || end <= s.tolerance {
-        return limited;
-    }
-    // Clamping after every step can pin the iteration against a limit off the target.
-    let free = |free: &LegChain| solve_within(free, target, side, start, s);
-    match reach_then_turn(chain, target, side, start, s, free) {
-        Some(mut turned) => {
-            turned.iterations += limited.iterations;
-            turned
-        }
-        None => limited,
-    }
+    limited_else_turned(chain, target, side, start, s, |c| solve_within(c, target, side, start, s))
 }
 
 /// The iteration itself, with `chain`'s limits clamped after every step.

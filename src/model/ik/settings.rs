@@ -30,23 +30,9 @@ pub enum IkSolverKind {
     Gradient,
 }
 
+crate::model::variants::named_variants!(IkSolverKind);
+
 impl IkSolverKind {
-    /// Every solver, in the order the config documents them.
-    pub const ALL: [IkSolverKind; <IkSolverKind as strum::EnumCount>::COUNT] =
-        crate::model::variants::array(<IkSolverKind as strum::VariantArray>::VARIANTS);
-
-    /// The config's name for it.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        self.into()
-    }
-
-    /// The solver called `name` in a config.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<IkSolverKind> {
-        name.parse().ok()
-    }
-
     /// Whether it iterates (and so warm-starts and counts iterations).
     #[must_use]
     pub fn is_iterative(self) -> bool {
@@ -77,23 +63,7 @@ pub enum JacobianVariant {
     PseudoInverse,
 }
 
-impl JacobianVariant {
-    /// Every variant, in config order.
-    pub const ALL: [JacobianVariant; <JacobianVariant as strum::EnumCount>::COUNT] =
-        crate::model::variants::array(<JacobianVariant as strum::VariantArray>::VARIANTS);
-
-    /// The config's name for it.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        self.into()
-    }
-
-    /// The variant called `name` in a config.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<JacobianVariant> {
-        name.parse().ok()
-    }
-}
+crate::model::variants::named_variants!(JacobianVariant);
 
 /// The gradient solver's settings (seed 002's defaults: δ0 = 5, ε = 1e-4, 100 restarts on
 /// the first frame, 100 perturbations of ±15° a frame).

@@ -115,6 +115,31 @@ fn edge(
     (pose, angles)
 }
 
+/// How the angle-space solvers (CCD, Jacobian) finish: `solve` on the chain as it is (limits
+/// clamped after every step); where that ends off the target — clamping can pin the iteration
+/// against a limit — [`reach_then_turn`] with the same `solve` on the unlimited chain.
+pub(crate) fn limited_else_turned(
+    chain: &LegChain,
+    target: DVec3,
+    side: f64,
+    start: LegAngles,
+    s: &IkSettings,
+    solve: impl Fn(&LegChain) -> Iterated,
+) -> Iterated {
+    let limited = solve(chain);
+    let end = chain.forward(limited.angles, side).ankle.distance(target);
+    if !chain.limits.enabled || end <= s.tolerance {
+        return limited;
+    }
+    match reach_then_turn(chain, target, side, start, s, solve) {
+        Some(mut turned) => {
+            turned.iterations += limited.iterations;
+            turned
+        }
+        None => limited,
+    }
+}
+
 /// The fallback of the angle-space solvers (CCD, Jacobian) where their limited iteration
 /// ends off the target: `free` (the same solver on the same chain with the limits off, or
 /// where that misses, FABRIK's passes) reaches with the knee toward the reference, and the
