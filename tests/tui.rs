@@ -554,6 +554,13 @@ fn undo_says_what_is_in_force_help_keys_fit_and_paused_shows_no_fps() {
     let row = help.lines().find(|l| l.contains("shift+right L")).expect("the coarse-step line");
     assert!(row.contains("shift+right L  ") || row.contains("shift+right L "), "{row}");
     assert!(!row.contains("Lchange") && !row.contains("Lby"), "{row}");
+    // The original fault was a ragged description column, so the coarse step's description
+    // must start in the same column as a short key's.
+    let column_of = |needle: &str| {
+        let line = help.lines().find(|l| l.contains(needle)).unwrap_or_else(|| panic!("{needle}:\n{help}"));
+        line[..line.find(needle).expect("found")].chars().count()
+    };
+    assert_eq!(column_of("change it by a coarse step"), column_of("show or hide this help"), "{help}");
     key(&mut app, KeyCode::Esc);
     app.measured_fps = Some(14.0);
     key(&mut app, KeyCode::Char(' '));

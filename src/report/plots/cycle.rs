@@ -124,21 +124,18 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     root.present().map_err(err)
 }
 
-/// Hip, knee and ankle angles: each leg over its own cycle, or with compared walks the
-/// right leg of each.
 /// The normative band's colour: grey, behind the walks.
 const NORM: RGBColor = RGBColor(120, 120, 120);
 
-/// The built-in normative reference's curve for `joint` ("hip", "knee", "ankle"): its mean
-/// and a mean +- 1 SD band over 0-100 % of the cycle.
-fn normative_cycle(joint: &str) -> Option<Cycle> {
+/// `reference`'s curve for `joint` ("hip", "knee", "ankle"): its mean and a mean +- 1 SD
+/// band over 0-100 % of the cycle.
+fn normative_cycle(reference: &crate::normative::Reference, joint: &str) -> Option<Cycle> {
     let stem = match joint {
         "hip" => "hip_flex",
         "knee" => "knee_flex",
         "ankle" => "ankle_dorsi",
         _ => return None,
     };
-    let reference = crate::normative::Reference::parse(crate::normative::BUILT_IN, "built-in").ok()?;
     let (_, mean, sd) = reference.curves.iter().find(|(s, _, _)| s == stem)?;
     let pct = |i: usize| i as f64;
     let lo = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m - s));
@@ -149,6 +146,8 @@ fn normative_cycle(joint: &str) -> Option<Cycle> {
     })
 }
 
+/// Hip, knee and ankle angles: each leg over its own cycle, or with compared walks the
+/// right leg of each, over the built-in measured adults' mean +- 1 SD.
 pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let title = if walks.len() == 1 {
@@ -164,6 +163,8 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         ("knee", "flexion + (deg)", |l| l.knee_flex_deg),
         ("ankle", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
     ];
+    // The built-in file is part of the binary and checked by a test, so it always parses.
+    let reference = crate::normative::Reference::parse(crate::normative::BUILT_IN, "built-in").ok();
     for (area, (name, unit, pick)) in areas.iter().zip(joints) {
         let mut cycles = Vec::new();
         for (k, (walk, d)) in walks.iter().enumerate() {
@@ -176,7 +177,7 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
             }
         }
         // Measured adult walking behind the walk's curves: mean and +-1 SD.
-        if let Some(norm) = normative_cycle(name) {
+        if let Some(norm) = reference.as_ref().and_then(|r| normative_cycle(r, name)) {
             cycles.insert(0, ("adults, Fukuchi 2018 (+-1 SD)".to_string(), NORM, norm));
         }
         let lines: Vec<(&str, RGBColor, &Cycle)> = cycles.iter().map(|(n, c, cy)| (n.as_str(), *c, cy)).collect();
