@@ -31,6 +31,54 @@ pub(super) fn y_range(series: &[&[(f64, f64)]]) -> std::ops::Range<f64> {
     (lo - pad)..(hi + pad)
 }
 
+/// Legend label text size (px), shared so the legend's footprint can be estimated.
+pub(super) const LEGEND_FONT_PX: u32 = 20;
+
+/// Pixel height of a legend of `rows` labels (measured on the embedded font: 3 rows, 84 px).
+pub(super) fn legend_height_px(rows: usize) -> f64 {
+    28.0 * rows as f64 + 6.0
+}
+
+/// The legend corner of a plot `plot_px` (width, height) in pixels over `x` by `y` that
+/// covers the fewest of `series`' points, so a legend never hides the curve it names where
+/// a free corner exists. Ties keep the order upper right, upper left, lower right, lower left.
+pub(super) fn legend_corner(
+    plot_px: (u32, u32),
+    x: std::ops::Range<f64>,
+    y: std::ops::Range<f64>,
+    labels: &[&str],
+    series: &[&[(f64, f64)]],
+) -> SeriesLabelPosition {
+    // The legend's footprint as shares of the plot: a 24 px swatch, the text (the font's
+    // average advance is about 0.55 of its size) and the box's padding and offset.
+    let widest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0) as f64;
+    let width_px = 24.0 + 0.55 * f64::from(LEGEND_FONT_PX) * widest + 40.0;
+    let w = (width_px / f64::from(plot_px.0.max(1))).min(1.0);
+    let h = ((legend_height_px(labels.len()) + 10.0) / f64::from(plot_px.1.max(1))).min(1.0);
+    let covered = |right: bool, upper: bool| {
+        series
+            .iter()
+            .flat_map(|s| s.iter())
+            .filter(|(px, py)| {
+                let fx = (px - x.start) / (x.end - x.start);
+                let fy = (py - y.start) / (y.end - y.start);
+                let in_x = if right { fx >= 1.0 - w } else { fx <= w };
+                let in_y = if upper { fy >= 1.0 - h } else { fy <= h };
+                in_x && in_y
+            })
+            .count()
+    };
+    [
+        (covered(true, true), SeriesLabelPosition::UpperRight),
+        (covered(false, true), SeriesLabelPosition::UpperLeft),
+        (covered(true, false), SeriesLabelPosition::LowerRight),
+        (covered(false, false), SeriesLabelPosition::LowerLeft),
+    ]
+    .into_iter()
+    .min_by_key(|(count, _)| *count)
+    .map_or(SeriesLabelPosition::UpperRight, |(_, corner)| corner)
+}
+
 /// The right leg's colour.
 pub(super) const RIGHT: RGBColor = RGBColor(200, 40, 40);
 /// The left leg's colour.
@@ -46,3 +94,28 @@ pub(super) const PALETTE: [RGBColor; 5] = [
     RGBColor(230, 130, 0),
     RGBColor(130, 40, 170),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A plot of 500 x 400 px over 0..100 by 0..1.
+    fn corner(series: &[(f64, f64)]) -> SeriesLabelPosition {
+        legend_corner((500, 400), 0.0..100.0, 0.0..1.0, &["design"], &[series])
+    }
+
+    #[test]
+    fn the_legend_goes_to_the_corner_its_curves_leave_free() {
+        assert_eq!(corner(&[]), SeriesLabelPosition::UpperRight, "nothing drawn: the usual corner");
+        // A rising curve fills the upper right and the lower left.
+        let rising: Vec<(f64, f64)> = (0..=100).map(|p| (f64::from(p), f64::from(p) / 100.0)).collect();
+        assert_eq!(corner(&rising), SeriesLabelPosition::UpperLeft);
+        // A hump (the swing's lateral curve) peaks mid-plot and leaves the upper corners free.
+        let hump: Vec<(f64, f64)> =
+            (0..=100).map(|p| (f64::from(p), (std::f64::consts::PI * f64::from(p) / 100.0).sin())).collect();
+        assert_eq!(corner(&hump), SeriesLabelPosition::UpperRight);
+        // Points in every corner but the lower left.
+        let three = [(99.0, 0.99), (1.0, 0.99), (99.0, 0.01)];
+        assert_eq!(corner(&three), SeriesLabelPosition::LowerLeft);
+    }
+}

@@ -1,7 +1,7 @@
 //! Plots over the gait cycle, mean and min–max band of the steady cycles: the pelvis and the
 //! joint angles, with compared walks overlaid.
 
-use super::common::{FONT, LEFT, PALETTE, RIGHT, Res, err, y_range};
+use super::common::{FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_height_px, y_range};
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
 use plotters::coord::Shift;
@@ -17,10 +17,16 @@ fn cycle_chart<DB: DrawingBackend>(
 ) -> Res {
     let all: Vec<&[(f64, f64)]> = lines.iter().flat_map(|(_, _, c)| [c.mean.as_slice(), c.band.as_slice()]).collect();
     let y = y_range(&all);
-    // Room above the data for the legend, so it never covers a curve; a lone line needs no
-    // legend (the figure's title and summary.md name the walk).
+    // Room above the data for the event names and, above them, the legend, so neither covers
+    // a curve nor each other; a lone line needs no legend (the figure's title and summary.md
+    // name the walk). The plot's height is the area's less the caption, margins and x labels.
     let legend = lines.len() > 1;
-    let y = if legend { y.start..y.end + 0.3 * (y.end - y.start) } else { y };
+    let plot_px = (f64::from(area.dim_in_pixel().1) - 30.0 - 2.0 * 12.0 - 55.0).max(100.0);
+    let legend_px = if legend { legend_height_px(lines.len()) + 8.0 } else { 0.0 };
+    let headroom_px = (legend_px + 30.0).min(0.6 * plot_px);
+    let span = y.end - y.start;
+    let y = y.start..y.start + span * plot_px / (plot_px - headroom_px);
+    let label_y = y.end - (y.end - y.start) * (legend_px + 4.0) / plot_px;
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FONT, 30))
         .margin(12)
@@ -56,17 +62,13 @@ fn cycle_chart<DB: DrawingBackend>(
             )))
             .map_err(err)?;
         chart
-            .draw_series(std::iter::once(Text::new(
-                name.to_string(),
-                (*pct + 0.8, y.end - (y.end - y.start) * 0.06),
-                (FONT, 18),
-            )))
+            .draw_series(std::iter::once(Text::new(name.to_string(), (*pct + 0.8, label_y), (FONT, 18))))
             .map_err(err)?;
     }
     if legend {
         chart
             .configure_series_labels()
-            .label_font((FONT, 20))
+            .label_font((FONT, LEGEND_FONT_PX))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .position(SeriesLabelPosition::UpperRight)

@@ -1,7 +1,7 @@
 //! Plots of the swing's curves over their own span: each design curve, and each step's
 //! curve as the planner adapted it to the terrain.
 
-use super::common::{DESIGN, FONT, RIGHT, Res, err, y_range};
+use super::common::{DESIGN, FONT, LEGEND_FONT_PX, RIGHT, Res, err, legend_corner, y_range};
 use super::data::Data;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
@@ -25,7 +25,7 @@ fn curve_chart<DB: DrawingBackend>(
         .margin(12)
         .x_label_area_size(55)
         .y_label_area_size(80)
-        .build_cartesian_2d(0f64..100f64, y)
+        .build_cartesian_2d(0f64..100f64, y.clone())
         .map_err(err)?;
     chart
         .configure_mesh()
@@ -50,11 +50,14 @@ fn curve_chart<DB: DrawingBackend>(
         .map_err(err)?
         .label("design")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(3)));
+    let labels: &[&str] = if steps.is_empty() { &["design"] } else { &["adapted, each step", "design"] };
+    let corner = legend_corner(chart.plotting_area().dim_in_pixel(), 0.0..100.0, y, labels, &all);
     chart
         .configure_series_labels()
-        .label_font((FONT, 20))
+        .label_font((FONT, LEGEND_FONT_PX))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
+        .position(corner)
         .draw()
         .map_err(err)?;
     Ok(())
