@@ -607,3 +607,15 @@ fn the_arm_curves_are_charted_too() {
     // The shoulder swings about ±12.5° on the default walk: the axis says so.
     assert!(shoulder.contains("12.") || shoulder.contains("-12."), "{shoulder}");
 }
+
+/// At 80 columns the walk panel's status line shows the step number whole: it once cut
+/// "step 10" to "step 1".
+#[test]
+fn the_step_number_is_never_cut_at_80_columns() {
+    let app = walked(Some(&config("default")), 420);
+    let step = app.walker.footfalls().last().expect("steps were taken").step;
+    assert!(step >= 10, "the walk reached two-digit steps: {step}");
+    let shown = screen(&app, 80, 24);
+    let line = shown.lines().find(|l| l.contains("support ")).unwrap_or_else(|| panic!("{shown}"));
+    assert!(line.contains(&format!("step {step} ")) || line.contains(&format!("step {step}│")), "{line}");
+}

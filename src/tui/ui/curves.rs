@@ -172,9 +172,16 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
                 .data(&cursor),
         );
     }
-    let inner = super::panel(f, area, Line::raw(format!(" {} ", data.title)), None);
+    // The x axis's name in the bottom border: ratatui draws an axis title on the chart's
+    // lowest data row, where it hid the curve's minimum (the pelvic rotation at mid-cycle).
+    let inner = super::panel(
+        f,
+        area,
+        Line::raw(format!(" {} ", data.title)),
+        Some(Line::raw(format!(" x: {} ", data.x_label))),
+    );
     let chart = Chart::new(datasets)
-        .x_axis(Axis::default().title(data.x_label).bounds(x).labels([label(x[0]), label(x[1])]))
+        .x_axis(Axis::default().bounds(x).labels([label(x[0]), label(x[1])]))
         .y_axis(Axis::default().bounds(y).labels([label(y[0]), label(y[1])]))
         .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
         // The legend only where it covers little of the chart: in small charts it hid the data.

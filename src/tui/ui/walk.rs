@@ -34,16 +34,42 @@ pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
             Span::raw("  "),
             Span::styled(leg(Side::Left), Style::new().fg(LEFT)),
         ]),
-        Line::from(format!(
-            "support {}  t {:.2}s  x {:.2}m  step {}",
-            fr.support.name(),
-            fr.time_s,
-            fr.pelvis.x,
-            app.walker.footfalls().last().map_or(0, |f| f.step)
+        Line::from(fit_fields(
+            &[
+                format!("support {}", fr.support.name()),
+                format!("step {}", app.walker.footfalls().last().map_or(0, |f| f.step)),
+                format!("t {:.2}s", fr.time_s),
+                format!("x {:.2}m", fr.pelvis.x),
+            ],
+            usize::from(info_area.width),
         )),
         ik_line(app),
     ];
     f.render_widget(Paragraph::new(info), info_area);
+}
+
+/// `fields` joined by two spaces, else by one, else the leading ones that fit: a field is
+/// shown whole or not at all, since a number cut at the panel's edge reads as another number
+/// (at 80 columns "step 10" was cut to "step 1").
+fn fit_fields(fields: &[String], width: usize) -> String {
+    for separator in ["  ", " "] {
+        let joined = fields.join(separator);
+        if joined.chars().count() <= width {
+            return joined;
+        }
+    }
+    let mut shown = String::new();
+    for field in fields {
+        let gap = usize::from(!shown.is_empty());
+        if shown.chars().count() + gap + field.chars().count() > width {
+            break;
+        }
+        if gap == 1 {
+            shown.push(' ');
+        }
+        shown.push_str(field);
+    }
+    shown
 }
 
 /// The legs' IK this frame: solver, ankle error (µm, to fit 80 columns) and iterations, a
@@ -167,4 +193,19 @@ fn draw_canvas(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         }
     });
     f.render_widget(canvas, area);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fit_fields;
+
+    #[test]
+    fn fields_are_shown_whole_or_not_at_all() {
+        let fields = ["support double".to_string(), "step 10".to_string(), "t 4.36s".to_string()];
+        assert_eq!(fit_fields(&fields, 40), "support double  step 10  t 4.36s");
+        assert_eq!(fit_fields(&fields, 30), "support double step 10 t 4.36s");
+        assert_eq!(fit_fields(&fields, 29), "support double step 10");
+        assert_eq!(fit_fields(&fields, 20), "support double");
+        assert_eq!(fit_fields(&fields, 5), "");
+    }
 }
