@@ -619,3 +619,19 @@ fn the_step_number_is_never_cut_at_80_columns() {
     let line = shown.lines().find(|l| l.contains("support ")).unwrap_or_else(|| panic!("{shown}"));
     assert!(line.contains(&format!("step {step} ")) || line.contains(&format!("step {step}│")), "{line}");
 }
+
+/// The optimiser table shows a column whole or not at all: at 80 columns the search time
+/// (5 cells) does not fit, and a cut "162" read as "16".
+#[test]
+fn optimiser_columns_are_whole_or_hidden() {
+    let mut app = walked(Some(&config("default")), 200);
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Tab);
+    }
+    assert_eq!(app.panel, Panel::Optimiser);
+    let header = |shown: &str| shown.lines().find(|l| l.contains("ratio cost")).map(str::to_string);
+    let narrow = header(&screen(&app, 80, 24)).expect("the table's header at 80x24");
+    assert!(narrow.contains("feas") && !narrow.contains(" us"), "{narrow}");
+    let wide = header(&screen(&app, 160, 48)).expect("the table's header at 160x48");
+    assert!(wide.contains("feas  us"), "{wide}");
+}
