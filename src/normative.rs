@@ -84,6 +84,13 @@ pub struct CurveComparison {
     pub at_pct: f64,
     /// Share of the cycle where the walk is outside the reference's mean ± 1 SD (%).
     pub outside_1sd_pct: f64,
+    /// Share of the cycle where the walk is outside the reference's mean ± 2 SD (%).
+    pub outside_2sd_pct: f64,
+    /// Pearson correlation of the walk's curve with the reference mean: the shape alone,
+    /// blind to offset and scale (1: the same shape).
+    pub pearson_r: f64,
+    /// The walk's range of motion less the reference's (deg).
+    pub range_difference_deg: f64,
     /// The walk's and the reference's largest value and where (deg, %).
     pub walk_max: (f64, f64),
     /// See `walk_max`.
@@ -110,6 +117,23 @@ fn extreme(points: &[(f64, f64)], larger: bool) -> (f64, f64) {
     points.iter().copied().fold(points[0], pick)
 }
 
+/// Pearson's r of two equally long series; 0 when either is flat (no shape to correlate).
+fn pearson(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len() as f64;
+    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
+    let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
+    for (x, y) in a.iter().zip(b) {
+        sab += (x - ma) * (y - mb);
+        saa += (x - ma) * (x - ma);
+        sbb += (y - mb) * (y - mb);
+    }
+    if saa == 0.0 || sbb == 0.0 { 0.0 } else { sab / (saa * sbb).sqrt() }
+}
+
+fn range(v: &[f64]) -> f64 {
+    v.iter().copied().fold(f64::NEG_INFINITY, f64::max) - v.iter().copied().fold(f64::INFINITY, f64::min)
+}
+
 /// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
 /// every 2 % of the right gait cycle.
 pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Result<Comparison> {
@@ -126,7 +150,8 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Resul
         let rms_deg = (diffs.iter().map(|d| d * d).sum::<f64>() / diffs.len() as f64).sqrt();
         let (at, max_dev) =
             diffs.iter().enumerate().fold((0, 0.0_f64), |a, (i, d)| if d.abs() > a.1.abs() { (i, *d) } else { a });
-        let outside = diffs.iter().zip(&theirs).filter(|(d, t)| d.abs() > t.1).count();
+        let outside = |k: f64| diffs.iter().zip(&theirs).filter(|(d, t)| d.abs() > k * t.1).count();
+        let theirs_mean: Vec<f64> = theirs.iter().map(|t| t.0).collect();
         let pct = |i: usize| 2.0 * i as f64;
         // Extremes as compared: a shape's without its mean.
         let ours_pts: Vec<(f64, f64)> = ours.iter().enumerate().map(|(i, v)| (v - ours_off, pct(i))).collect();
@@ -137,7 +162,10 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Resul
             rms_deg,
             max_deviation_deg: max_dev,
             at_pct: pct(at),
-            outside_1sd_pct: 100.0 * outside as f64 / diffs.len() as f64,
+            outside_1sd_pct: 100.0 * outside(1.0) as f64 / diffs.len() as f64,
+            outside_2sd_pct: 100.0 * outside(2.0) as f64 / diffs.len() as f64,
+            pearson_r: pearson(ours, &theirs_mean),
+            range_difference_deg: range(ours) - range(&theirs_mean),
             walk_max: extreme(&ours_pts, true),
             reference_max: extreme(&theirs_pts, true),
             walk_min: extreme(&ours_pts, false),
@@ -150,6 +178,32 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Resul
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::body::{BALL_FRACTION, BodyDims, HEEL_FRACTION, Sex};
+
+    /// Hip height over the ground (m) when the reference's mean angles at `pct` % are put
+    /// through a 1.75 m body's leg with the heel `heel_back` of the foot behind the ankle,
+    /// standing on whichever of heel and ball is lower.
+    fn hip_height(r: &Reference, pct: usize, heel_back: f64) -> f64 {
+        let d = BodyDims::from_height(1.75, Sex::Male);
+        let mean = |stem: &str| r.curves.iter().find(|c| c.0 == stem).unwrap().1[pct % 100].to_radians();
+        let thigh = mean("hip_flex") - mean("pelvis_tilt_ant");
+        let shank = thigh - mean("knee_flex");
+        let pitch = shank + mean("ankle_dorsi");
+        let below = |x: f64| -(x * pitch.sin() - d.ankle_height * pitch.cos());
+        let ankle_above_contact =
+            below(-heel_back * d.foot_length).max(below((BALL_FRACTION - heel_back) * d.foot_length));
+        d.thigh * thigh.cos() + d.shank * shank.cos() + ankle_above_contact
+    }
+
+    #[test]
+    fn the_norms_put_both_feet_down_at_heel_strike_with_the_heel_behind_the_ankle() {
+        // Why HEEL_FRACTION is what it is: at heel strike the leading leg stands on its heel
+        // and the trailing one (half a cycle on) on its ball; the same pelvis must sit on both.
+        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
+        let gap = |heel_back: f64| (hip_height(&r, 0, heel_back) - hip_height(&r, 50, heel_back)).abs();
+        assert!(gap(HEEL_FRACTION) < 0.011, "{}", gap(HEEL_FRACTION));
+        assert!(gap(0.0) > 0.03, "a heel under the ankle: {}", gap(0.0));
+    }
 
     #[test]
     fn the_built_in_reference_parses_and_a_bad_file_is_located() {

@@ -117,7 +117,8 @@ fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
     assert!((f("step_width_m") - 0.1).abs() < 1e-6);
     assert!(f("foot_skate_mm") < 0.5 && f("terrain_penetration_mm") < 1.0 && f("reach_failures") == 0.0);
     assert!(f("optimiser_mean_cost") > 0.0 && f("optimiser_steps") >= 6.0, "{}", f("optimiser_steps"));
-    assert!(f("optimiser_mean_cost") < json["optimiser_fixed_rule_mean_cost"].as_f64().unwrap());
+    // Level ground at 1.3 m/s keeps the fixed rule since the calibration (issue 12): never above.
+    assert!(f("optimiser_mean_cost") <= json["optimiser_fixed_rule_mean_cost"].as_f64().unwrap());
     let md = read(&a, "summary.md");
     for key in SUMMARY_KEYS {
         assert!(md.contains(&format!("(`{key}`)")), "{key} not in summary.md");

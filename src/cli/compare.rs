@@ -38,23 +38,37 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
     )?;
     writeln!(
         out,
-        "# deviation = walk - reference; outside = share of the cycle beyond mean +- 1 SD; * shape only (means removed)"
+        "# deviation = walk - reference; r = Pearson r of the shapes; out1/out2 = share of the cycle beyond mean +- 1/2 SD; rom = range of motion difference; * shape only (means removed)"
     )?;
     writeln!(
         out,
-        "{:<17} {:>7} {:>9} {:>5} {:>8}  {:>15} {:>15}  {:>15} {:>15}",
-        "curve", "rms_deg", "max_dev", "at_%", "outside%", "walk max @%", "ref max @%", "walk min @%", "ref min @%"
+        "{:<17} {:>7} {:>6} {:>8} {:>5} {:>5} {:>5} {:>7}  {:>15} {:>15}  {:>15} {:>15}",
+        "curve",
+        "rms_deg",
+        "r",
+        "max_dev",
+        "at_%",
+        "out1%",
+        "out2%",
+        "rom_deg",
+        "walk max @%",
+        "ref max @%",
+        "walk min @%",
+        "ref min @%"
     )?;
     let at = |(v, p): (f64, f64)| format!("{v:.1} @{p:.0}");
     for k in &c.curves {
         let name = if k.shape_only { format!("{}*", k.curve) } else { k.curve.clone() };
         writeln!(
             out,
-            "{name:<17} {:>7.2} {:>9.2} {:>5.0} {:>8.0}  {:>15} {:>15}  {:>15} {:>15}",
+            "{name:<17} {:>7.2} {:>6.3} {:>8.2} {:>5.0} {:>5.0} {:>5.0} {:>+7.1}  {:>15} {:>15}  {:>15} {:>15}",
             k.rms_deg,
+            k.pearson_r,
             k.max_deviation_deg,
             k.at_pct,
             k.outside_1sd_pct,
+            k.outside_2sd_pct,
+            k.range_difference_deg,
             at(k.walk_max),
             at(k.reference_max),
             at(k.walk_min),

@@ -259,6 +259,14 @@ pub struct BodyDims {
 /// metatarsal heads; Winter's foot markers put them at about three quarters).
 pub(crate) const BALL_FRACTION: f64 = 0.75;
 
+/// How far the heel's contact point sits behind the ankle joint, as a fraction of foot
+/// length. The ankle joint is not over the heel: anatomically the malleoli stand about a fifth
+/// of the foot ahead of the heel's back. 0.15 is what the normative joint angles ask of this
+/// leg chain: put through it (forward kinematics, a test in `src/normative.rs`), they set the leading
+/// heel and the trailing ball on the ground at heel strike within 1 cm of each other, where
+/// a heel under the ankle leaves them 3.4 cm apart.
+pub(crate) const HEEL_FRACTION: f64 = 0.15;
+
 impl BodyDims {
     /// Lengths from height and sex with Drillis & Contini's proportions. The widths are
     /// joint-centre distances, not skin widths: hip joints 0.098 H apart for male and 0.108 H
@@ -299,17 +307,18 @@ impl BodyDims {
         self.thigh + self.shank
     }
 
-    /// Heel contact point in the foot's frame (origin at the ankle joint): on the sole, under
-    /// the ankle [6.3.2, fig 6.4].
+    /// Heel contact point in the foot's frame (origin at the ankle joint): on the sole, behind
+    /// the ankle by [`HEEL_FRACTION`] of the foot [6.3.2, fig 6.4].
     #[must_use]
     pub(crate) fn heel_local(&self) -> DVec3 {
-        DVec3::new(0.0, -self.ankle_height, 0.0)
+        DVec3::new(-HEEL_FRACTION * self.foot_length, -self.ankle_height, 0.0)
     }
 
-    /// Toe joint (ball of the foot) in the foot's frame, on the sole.
+    /// Toe joint (ball of the foot) in the foot's frame, on the sole, [`BALL_FRACTION`] of the
+    /// foot ahead of the heel.
     #[must_use]
     pub(crate) fn ball_local(&self) -> DVec3 {
-        DVec3::new(BALL_FRACTION * self.foot_length, -self.ankle_height, 0.0)
+        DVec3::new((BALL_FRACTION - HEEL_FRACTION) * self.foot_length, -self.ankle_height, 0.0)
     }
 
     /// Length of the toe segment, ball to toe tip.

@@ -285,6 +285,15 @@ impl Curve {
         }
     }
 
+    /// Shifts the curve's start by `h` while keeping its end and shape: the mirror of
+    /// [`Curve::shift_end`], adding `(1 − s)·h` (linear in x, so joins stay smooth).
+    pub fn shift_start(&mut self, h: f64) {
+        let (x0, x1) = (self.x_start(), self.x_end());
+        for p in &mut self.points {
+            p.y += (x1 - p.x) / (x1 - x0) * h;
+        }
+    }
+
     /// Raises the curve locally so that y(x) grows by `delta` [6.3.2, fig 6.11].
     ///
     /// The segment holding x has its two end points raised together with the handles on both

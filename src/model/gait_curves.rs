@@ -141,29 +141,33 @@ impl CurveName {
             // the half-step curves start and end with slopes 1.12 and 0.88 of the mean.
             CurveName::PelvisForwardDsMs => &[(0.0, 0.0, 1.12), (1.0, 1.0, 0.88)],
             CurveName::PelvisForwardMsDs => &[(0.0, 0.0, 0.88), (1.0, 1.0, 1.12)],
-            // Thesis fig 6.5: slow lift first, faster later. At a 1.8 m stride the foot is 30° up
-            // at opposite heel strike (x ≈ 0.6) and 80° at toe-off; scaled by (stride/1.8)² a
-            // 1.41 m stride gives 18° and 49°, as in Perry's foot-floor angles.
-            CurveName::HeelRise => &[(0.0, 0.0, 0.0), (0.6, 30.0, 110.0), (1.0, 80.0, 140.0)],
-            // Thesis fig 6.6 and Winter's heel-marker data: slow at toe-off and heel strike,
-            // fastest just after mid-swing.
-            CurveName::SwingForward => &[(0.0, 0.0, 0.3), (0.55, 0.6, 1.9), (1.0, 1.0, 0.15)],
+            // Thesis fig 6.5's shape (slow lift first, faster later), its values the foot–floor
+            // angle of the normative walk (data/normative/, through this leg chain: 4° at 40 %,
+            // 14° at opposite heel strike, 58° at toe-off, for a 1.25 m stride), drawn for a
+            // 1.8 m stride and scaled by stride/1.8: a 1.41 m stride leaves the ground at 65°.
+            CurveName::HeelRise => {
+                &[(0.0, 0.0, 10.0), (0.42, 9.5, 40.0), (0.68, 26.5, 110.0), (0.87, 56.8, 190.0), (1.0, 83.4, 170.0)]
+            }
+            // Thesis fig 6.6's shape, its values the heel's forward progress in the normative
+            // walk (data/normative/ through this leg chain): a quarter of the way at a third of
+            // the swing, fastest at 0.6, easing onto the footfall.
+            CurveName::SwingForward => {
+                &[(0.0, 0.0, 0.5), (0.316, 0.243, 0.98), (0.632, 0.624, 1.42), (0.842, 0.907, 1.0), (1.0, 1.0, 0.2)]
+            }
             // Thesis fig 6.7: step-width line at both ends, hip line at mid-swing.
             CurveName::SwingLateral => &[(0.0, 0.0, 0.0), (0.5, 1.0, 0.0), (1.0, 0.0, 0.0)],
-            // Thesis fig 6.8: 15° toe-down at toe-off, near neutral at heel strike (4.5°), scaled
-            // by the actual toe-off angle. Between, the foot hangs from the shank with a nearly
-            // neutral ankle (Perry: ankle within −10..0° through swing while the knee flexes to
-            // 60°), so it stays steeply toe-down through initial swing, levels after mid-swing
-            // and turns toe-up in terminal swing: for a 49° toe-off, −51° at x = 0.25, −20° at
-            // 0.5, +11° at 0.8 and +15° at heel strike.
+            // Thesis fig 6.8: the ankle against the shank (dorsiflexion +), after the normative
+            // walk (data/normative/): push-off plantarflexion peaks after toe-off (−13.6° at 65 %),
+            // neutral by mid-swing, a few degrees up for the landing. Each step moves the start
+            // to the ankle's actual toe-off angle.
             CurveName::SwingAnkle => {
-                &[(0.0, -15.0, -5.0), (0.25, -15.5, 0.0), (0.5, -6.0, 45.0), (0.8, 3.5, 12.0), (1.0, 4.5, 0.0)]
+                &[(0.0, -9.0, -60.0), (0.08, -13.6, 0.0), (0.34, -1.2, 45.0), (0.6, 5.7, 0.0), (1.0, 1.5, 0.0)]
             }
-            // Thesis fig 6.10, three segments: the heel keeps rising after toe-off to its peak
-            // in initial swing (Winter: ≈ 0.28 m at x ≈ 0.22), falls through mid-swing and
-            // is still a few centimetres up in terminal swing before it lands.
+            // Thesis fig 6.10's shape, its values the normative walk's heel (data/normative/
+            // through this leg chain): 20 cm up at toe-off, its peak of 26 cm at 0.16 of the
+            // swing, down to 2 cm by three quarters and skimming the ground onto the footfall.
             CurveName::SwingHeelHeight => {
-                &[(0.0, 0.20, 0.35), (0.22, 0.28, 0.0), (0.65, 0.10, -0.3), (1.0, 0.0, -0.25)]
+                &[(0.0, 0.20, 0.7), (0.16, 0.257, 0.0), (0.47, 0.142, -0.6), (0.75, 0.022, -0.1), (1.0, 0.0, -0.1)]
             }
             // Ceccato et al. 2009: the arm swings opposite to its leg, furthest back at its own
             // heel strike and furthest forward at the opposite one (widest at double support).
@@ -239,15 +243,21 @@ mod tests {
         assert!(!(0.01..=0.99).contains(&rotation_peak), "{rotation_peak}");
         assert!((argmax(CurveName::PelvisLateral) - 0.31).abs() < 0.01);
         assert!((argmax(CurveName::Shoulder) - 0.5).abs() < 0.01);
-        assert!((argmax(CurveName::SwingHeelHeight) - 0.22).abs() < 0.02);
+        assert!((argmax(CurveName::SwingHeelHeight) - 0.16).abs() < 0.02);
         let heel_rise = CurveName::HeelRise.default_curve();
-        assert!((heel_rise.eval(1.0) - 80.0).abs() < 1e-9);
+        assert!((heel_rise.eval(1.0) - 83.4).abs() < 1e-9);
+        // The ankle's push-off peaks just after toe-off, its dorsiflexion mid-swing.
+        let ankle = CurveName::SwingAnkle.default_curve();
+        let argmin = (0..=1000).map(|i| i as f64 / 1000.0).min_by(|a, b| ankle.eval(*a).total_cmp(&ankle.eval(*b)));
+        assert!((argmin.unwrap() - 0.08).abs() < 0.01);
+        assert!((argmax(CurveName::SwingAnkle) - 0.6).abs() < 0.02);
         // Monotone where progress is meant.
         for c in [
             CurveName::PelvisForwardDsMs,
             CurveName::PelvisForwardMsDs,
             CurveName::SwingForward,
             CurveName::PelvisVertical,
+            CurveName::HeelRise,
         ] {
             let curve = c.default_curve();
             let ys: Vec<f64> = (0..=200).map(|i| curve.eval(i as f64 / 200.0)).collect();

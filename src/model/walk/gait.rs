@@ -21,8 +21,6 @@ use glam::{DQuat, DVec3};
 pub const HEEL_RISE_DESIGN_STRIDE_M: f64 = 1.8;
 /// Steepest heel rise the stance leg may take to reach (rad).
 pub const MAX_HEEL_RISE: f64 = 1.45;
-/// Toe-off plantarflexion the swing-ankle curve is designed for (deg) [fig 6.8].
-pub const SWING_ANKLE_DESIGN_DEG: f64 = 15.0;
 /// Least foot–ground angle at heel strike (rad): the heel, not the toe, lands first.
 pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 
@@ -213,7 +211,7 @@ impl Gait {
             LegPhase::Swing => {
                 let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
                 let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
-                swing_target(plan, s, leg.side, r)
+                swing_target(plan, s, leg.side, r, hip)
             }
         }
     }
@@ -276,7 +274,7 @@ pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Re
         LegPhase::Midstance => {
             leg.anchor = pose_at_boundary.target.ankle
                 + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
-            leg.heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
+            leg.heel_rise_scale = r.stride_m / HEEL_RISE_DESIGN_STRIDE_M;
             leg.phase = LegPhase::HeelRise;
         }
         LegPhase::HeelRise | LegPhase::Swing => {}
@@ -285,13 +283,14 @@ pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Re
 
 /// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
 /// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
-/// line toward the hip line and back, up on the heel-height curve; foot pitched by the ankle
-/// curve; toes back to neutral over the first fifth of the swing.
+/// line toward the hip line and back, up on the heel-height curve; the foot set by the ankle
+/// curve against the shank the leg will have (from `hip`); toes back to neutral over the first
+/// fifth of the swing.
 #[must_use]
 // Run in the planner's swing simulation and reach guard, hundreds of times a step; with the
 // planner in its own file (another codegen unit) it is only inlined there when marked.
 #[inline]
-pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTarget {
+pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved, hip: DVec3) -> LegTarget {
     let from = plan.heel_from;
     let to = plan.to.heel;
     let progress = plan.forward.eval(s);
@@ -300,14 +299,60 @@ pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved) -> LegTa
     let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
     let z = line_z + (hip_line_z - line_z) * plan.lateral.eval(s);
     let y = plan.ground_from + plan.heel_height.eval(s);
-    let pitch = plan.ankle_deg.eval(s).to_radians();
     let heel = DVec3::new(x, y, z);
+    let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, plan.ankle_deg.eval(s).to_radians(), r);
+    // Just after toe-off the foot keeps its pitch and hands it to the ankle curve over the
+    // first 15 % of the swing. Hung from the shank at once, a leg still stretched from the
+    // push-off feeds on itself: the hip runs ahead, the shank leans, the steeper foot drops
+    // the ankle further from the hip (on stairs up the knee locked out of reach).
+    if s < 0.15 {
+        let w = s / 0.15;
+        pitch = plan.pitch_from + w * w * (3.0 - 2.0 * w) * (pitch - plan.pitch_from);
+    }
+    // The heel must land first even where the pelvis ends up lower or further back than the
+    // planner foresaw (the optimiser and the reach guard move it after the ankle curve is
+    // set), or the toe strikes into the tread: over the last fifth of the swing the foot is
+    // eased up to the least strike angle where the shank would leave it below.
+    let floor = plan.to.ground_angle + MIN_STRIKE_ANGLE;
+    if pitch < floor && s > 0.8 {
+        let w = ((s - 0.8) / 0.2).clamp(0.0, 1.0);
+        pitch += w * w * (3.0 - 2.0 * w) * (floor - pitch);
+    }
     let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
     // The toes return to neutral over the first fifth of the swing, but never point below
     // the horizontal while the foot is still pitched down: a toe tip dipping back into the
     // ground it just left is what a literal linear return would draw.
     let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
     LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// The foot pitch (rad, toe up +) that gives an ankle dorsiflexion of `dorsi` (rad) on a leg
+/// from `hip` whose heel is at `heel`. The swing's ankle curve is the ankle's own angle, as
+/// the thesis draws it (fig 6.8) and the clinic measures it: a foot pitched against the
+/// horizontal instead flaps with the knee — it showed 20° dorsiflexion in mid-swing where
+/// people hold 0–5°. The ankle moves with the pitch (the heel is what is placed), so three
+/// fixed-point passes settle it (the heel sits 7 cm from the ankle: each pass cuts the error
+/// about tenfold).
+#[must_use]
+pub fn foot_pitch_for_ankle(hip: DVec3, heel: DVec3, yaw: f64, dorsi: f64, r: &Resolved) -> f64 {
+    let mut pitch = dorsi;
+    for _ in 0..3 {
+        let ankle = heel - foot_rotation(yaw, pitch) * r.dims.heel_local();
+        pitch = shank_angle(hip, ankle, r.dims.thigh, r.dims.shank) + dorsi;
+    }
+    pitch
+}
+
+/// The shank's sagittal angle (rad, from straight down, its lower end forward +) of a
+/// two-bone leg from `hip` to `ankle` with the knee forward of the hip–ankle line — the
+/// analytic IK's answer, in the walking plane. A neutral foot (ankle 0) is pitched by this.
+#[must_use]
+pub fn shank_angle(hip: DVec3, ankle: DVec3, thigh: f64, shank: f64) -> f64 {
+    let d = ankle - hip;
+    let length = d.x.hypot(d.y).clamp((thigh - shank).abs() + 1e-9, thigh + shank - 1e-9);
+    let toward_ankle = d.x.atan2(-d.y);
+    let at_ankle = ((shank * shank + length * length - thigh * thigh) / (2.0 * shank * length)).clamp(-1.0, 1.0).acos();
+    toward_ankle - at_ankle
 }
 
 /// The least heel-rise angle ≥ `from` (rad) at which the ankle, swinging about the toe joint

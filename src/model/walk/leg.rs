@@ -76,6 +76,9 @@ pub struct SwingPlan {
     pub to: Footfall,
     /// Toe bend at toe-off (rad); returns to neutral over the first fifth of the swing.
     pub(crate) toe_bend_from: f64,
+    /// Foot pitch at toe-off (rad): held at first, handed to the ankle curve over the first
+    /// 15 % of the swing.
+    pub(crate) pitch_from: f64,
     /// Heel progress 0→1 toward the footfall.
     pub forward: Curve,
     /// Weight toward the hip line.

@@ -24,8 +24,8 @@ pub mod step_problem;
 pub mod upper;
 
 pub use gait::{
-    Gait, HEEL_RISE_DESIGN_STRIDE_M, MAX_HEEL_RISE, MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, enter_stance_phase,
-    heel_rise_to_reach, swing_target,
+    Gait, HEEL_RISE_DESIGN_STRIDE_M, MAX_HEEL_RISE, MIN_STRIKE_ANGLE, enter_stance_phase, heel_rise_to_reach,
+    swing_target,
 };
 pub use pose::{bone_frame, ik_question, leg_pose, solve_leg};
 

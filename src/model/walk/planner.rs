@@ -11,7 +11,9 @@ use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
-use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall, swing_target};
+use crate::model::walk::gait::{
+    MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, place_footfall, shank_angle, swing_target,
+};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
@@ -40,11 +42,13 @@ impl Walker {
         let nominal_x = other.nominal_x + 0.5 * self.gait.r.stride_m;
         let to = place_footfall(&self.terrain, &self.gait.r, other.step + 1, side, nominal_x);
         let strike_phase = self.legs[i].cycle_start + 1.0;
-        // Swing planning step 1: the foot pitch curve.
-        let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose.target.pitch, &to);
         // Pelvis keys: the coming double support (its position chosen below), then this leg's
         // mid-stance.
         let ms_before = self.push_step_keys(&other, &to, strike_phase);
+        // Swing planning step 1: the ankle curve, and the foot angle it strikes at under the
+        // pelvis planned so far.
+        let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
+        let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
         let landing = LegState {
             side,
             phase: LegPhase::LoadingResponse,
@@ -64,6 +68,7 @@ impl Walker {
             ground_from,
             to,
             toe_bend_from: toe_off_pose.target.toe_bend,
+            pitch_from: toe_off_pose.target.pitch,
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
             ankle_deg,
@@ -80,6 +85,11 @@ impl Walker {
         let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
         let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
         if (record.chosen.x, record.chosen.y) != (ds.x, ds.y) {
+            // The chosen pelvis sets the shank at heel strike and with it the angle the foot
+            // lands at, which the guard's loading response starts from.
+            let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
+            let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
+            plan.ankle_deg = ankle_deg;
             guard_drop += self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
         }
         // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
@@ -100,19 +110,28 @@ impl Walker {
         self.legs[i].swing = Some(plan);
     }
 
-    /// The step's foot-pitch curve and the foot–ground angle it strikes `to` at: the design
-    /// curve scaled to the toe-off plantarflexion (`pitch_from`), since a foot that leaves
-    /// steeper swings through steeper; its end turned up where the footfall slopes up, so the
-    /// heel, not the toe, lands first.
-    fn adapt_swing_ankle(&self, pitch_from: f64, to: &Footfall) -> (Curve, f64) {
+    /// The step's ankle curve and the foot–ground angle it strikes `to` at with the hip at
+    /// `strike_hip`: the design curve (the ankle against the shank) with its start moved to
+    /// the ankle's angle at toe-off, so the swing picks up the push-off where it ends [6.3.2,
+    /// fig 6.8]; its end turned up where the foot would land toe first (uphill), so the heel,
+    /// not the toe, lands first.
+    fn adapt_swing_ankle(&self, toe_off_pose: &LegPose, to: &Footfall, strike_hip: DVec3) -> (Curve, f64) {
+        let r = &self.gait.r;
         let mut ankle_deg = self.gait.design.get(CurveName::SwingAnkle).clone();
-        let toe_off_plantar_deg = (-pitch_from).to_degrees().max(0.0);
-        ankle_deg.scale(1.0, (toe_off_plantar_deg / SWING_ANKLE_DESIGN_DEG).min(6.0));
-        let strike = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+        // In the walking plane, as the swing's targets are set: the solved knee's swivel (an
+        // IK twist) must not move the feet.
+        let t = &toe_off_pose.target;
+        let toe_off_dorsi_deg =
+            (t.pitch - shank_angle(toe_off_pose.hip, t.ankle, r.dims.thigh, r.dims.shank)).to_degrees();
+        ankle_deg.shift_start(toe_off_dorsi_deg - ankle_deg.eval(0.0));
+        let strike_pitch = |curve: &Curve| {
+            foot_pitch_for_ankle(strike_hip, to.heel, to.yaw, curve.eval(1.0).to_radians(), r) - to.ground_angle
+        };
+        let strike = strike_pitch(&ankle_deg);
         if strike < MIN_STRIKE_ANGLE {
             ankle_deg.shift_last_two((MIN_STRIKE_ANGLE - strike).to_degrees());
         }
-        let strike_angle = ankle_deg.eval(1.0).to_radians() - to.ground_angle;
+        let strike_angle = strike_pitch(&ankle_deg);
         (ankle_deg, strike_angle)
     }
 
@@ -336,10 +355,11 @@ impl Walker {
                 }));
             }
             for &phase in &samples {
+                let hip = self.pelvis_at(phase).hip(side.sign());
                 let ankle = match swing {
                     Some(plan) if phase < strike_phase => {
                         let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
-                        swing_target(plan, s, side, &r).ankle
+                        swing_target(plan, s, side, &r, hip).ankle
                     }
                     _ => {
                         let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
@@ -347,7 +367,6 @@ impl Walker {
                         footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
                     }
                 };
-                let hip = self.pelvis_at(phase).hip(side.sign());
                 let d = hip - ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();
                 let allowed = if horizontal < limit {
@@ -430,7 +449,7 @@ impl Walker {
                 let s = (i as f64 + 0.5) / SWING_SAMPLES as f64;
                 let pelvis = self.pelvis_at(toe_off_phase + s * span);
                 let hip = pelvis.hip(side.sign());
-                let target = swing_target(plan, s, side, r);
+                let target = swing_target(plan, s, side, r, hip);
                 // Out of reach: lift the heel until the ankle is back inside the sphere.
                 let d = hip - target.ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();

@@ -5,7 +5,7 @@ use crate::model::body::Side;
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
-use crate::model::walk::gait::{HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, SWING_ANKLE_DESIGN_DEG, place_footfall};
+use crate::model::walk::gait::{HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, place_footfall};
 use crate::model::walk::leg::{LegPhase, LegPose, LegState, LegTarget, foot_rotation};
 use glam::{DQuat, DVec3};
 
@@ -18,12 +18,18 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
     let step = 0.5 * r.stride_m;
     let left = place_footfall(terrain, r, -1, Side::Left, -step);
     // The right heel lands at the angle a steady step's swing would have brought it in at:
-    // the design ankle curve's end, scaled to the toe-off angle of a steady heel rise.
-    let heel_rise_scale = (r.stride_m / HEEL_RISE_DESIGN_STRIDE_M).powi(2);
-    let toe_off_angle = design.get(CurveName::HeelRise).eval(1.0) * heel_rise_scale;
-    let strike_angle = (design.get(CurveName::SwingAnkle).eval(1.0) * toe_off_angle / SWING_ANKLE_DESIGN_DEG)
-        .to_radians()
-        .max(MIN_STRIKE_ANGLE);
+    // the design ankle curve's end on a leg reaching the heel from where a steady walk's
+    // pelvis is at heel strike (mid double support's height, the mid-stance offset behind
+    // the step's middle).
+    let heel_rise_scale = r.stride_m / HEEL_RISE_DESIGN_STRIDE_M;
+    let hip = DVec3::new(
+        right.heel.x - (step / 2.0 - r.midstance_offset).max(0.0),
+        right.heel.y + dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
+        0.0,
+    );
+    let design_strike = design.get(CurveName::SwingAnkle).eval(1.0).to_radians();
+    let strike_angle =
+        (foot_pitch_for_ankle(hip, right.heel, right.yaw, design_strike, r) - right.ground_angle).max(MIN_STRIKE_ANGLE);
     let placeholder = LegPose {
         hip: DVec3::ZERO,
         knee: DVec3::ZERO,

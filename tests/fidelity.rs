@@ -1,0 +1,81 @@
+//! The walk against measured human gait (issue 12): a ratchet on `gaitlab compare`'s figures
+//! for the shipped speeds, and the shapes the calibration set out to give.
+//!
+//! Measured 2026-11-23 after the calibration (before it, on the default walk: hip r 0.961 /
+//! RMS 11.4°, knee 0.880 / 12.3°, ankle 0.821 / 10.3°, the ankle never below −0.4°). The
+//! issue's targets are r ≥ 0.95 and RMS ≤ 5° (ankle ≤ 4°); shapes (r) meet them for hip and
+//! knee at every speed, RMS does not yet: the knee's loading response is too flexed (the
+//! pelvis is held low at double support) and the reference is one speed (1.245 m/s), so
+//! brisk walks are compared with a slower walk's curves. Each bound is the measured value
+//! with a small margin: a change that moves the walk away from the norms fails here.
+
+use gaitlab::normative::{self, Comparison, Reference};
+use std::path::Path;
+
+fn compare(config: &str, sets: &[&str]) -> Comparison {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(config);
+    let sets: Vec<String> = sets.iter().map(|s| (*s).to_string()).collect();
+    let params = gaitlab::config::load(&path, &sets).unwrap();
+    let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
+    normative::compare(&path, &params, &reference).unwrap()
+}
+
+/// (rms_deg at most, r at least) for hip, knee, ankle.
+type Bounds = [(f64, f64); 3];
+
+#[test]
+fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
+    let cases: [(&str, &[&str], Bounds); 7] = [
+        // Measured: hip 5.92 / 0.992, knee 10.84 / 0.971, ankle 5.56 / 0.882.
+        ("configs/default.toml", &[], [(6.4, 0.985), (11.4, 0.96), (6.1, 0.87)]),
+        // 7.46 / 0.990, 7.93 / 0.967, 4.17 / 0.888.
+        ("configs/stroll.toml", &[], [(8.0, 0.985), (8.5, 0.955), (4.7, 0.87)]),
+        // 4.84 / 0.994, 16.25 / 0.968, 8.86 / 0.858.
+        ("configs/brisk.toml", &[], [(5.4, 0.985), (16.8, 0.955), (9.4, 0.84)]),
+        // 7.76 / 0.988, 8.08 / 0.957, 4.51 / 0.874.
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(8.3, 0.98), (8.6, 0.945), (5.0, 0.86)]),
+        // 7.23 / 0.992, 7.88 / 0.974, 4.00 / 0.897.
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(7.8, 0.985), (8.4, 0.96), (4.5, 0.88)]),
+        // 5.92 / 0.992, 10.84 / 0.971, 5.56 / 0.882.
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(6.4, 0.985), (11.4, 0.96), (6.1, 0.87)]),
+        // 4.88 / 0.994, 14.65 / 0.970, 7.88 / 0.864.
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(5.4, 0.985), (15.2, 0.96), (8.4, 0.85)]),
+    ];
+    for (config, sets, bounds) in cases {
+        let c = compare(config, sets);
+        for (curve, (max_rms, min_r)) in ["hip_flex", "knee_flex", "ankle_dorsi"].iter().zip(bounds) {
+            let k = c.curves.iter().find(|k| k.curve == *curve).unwrap();
+            assert!(
+                k.rms_deg <= max_rms && k.pearson_r >= min_r,
+                "{config} {sets:?} {curve}: rms {:.2} (<= {max_rms}), r {:.3} (>= {min_r})",
+                k.rms_deg,
+                k.pearson_r
+            );
+        }
+    }
+}
+
+#[test]
+fn the_calibrated_shapes_are_there_on_the_default_walk() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
+    let params = gaitlab::config::load(&path, &[]).unwrap();
+    let walk = gaitlab::snapshot::measure::measure(&path, &params).unwrap();
+    // Every 2 % of the right leg's cycle.
+    let curve = |name: &str| walk.curves.iter().find(|(n, _)| n == name).unwrap().1.clone();
+    let (knee, ankle) = (curve("knee_flex_r_deg"), curve("ankle_dorsi_r_deg"));
+    let at = |c: &[f64], pct: usize| c[pct / 2];
+    // Push-off: the ankle plantarflexes from heel rise to just after toe-off (norm: −13.6° at
+    // 65 %, 12–20° in normal adults); before, it never went below −0.4°.
+    let push_off = (30..35).map(|i| ankle[i]).fold(f64::INFINITY, f64::min);
+    assert!((-25.0..=-12.0).contains(&push_off), "push-off {push_off}");
+    // The knee flexes again from heel rise instead of being held at its reach limit: up 25°
+    // from 46 % to toe-off (norm: 3.7° → 35°); before, held at 5–7° from 30 % to 45 %.
+    assert!(at(&knee, 62) - at(&knee, 46) > 25.0, "{} -> {}", at(&knee, 46), at(&knee, 62));
+    // The swing ankle near neutral after mid-swing (norm 0–6°); before, 20° dorsiflexion.
+    for pct in [80, 84, 88, 92] {
+        assert!((-5.0..=8.0).contains(&at(&ankle, pct)), "ankle at {pct} %: {}", at(&ankle, pct));
+    }
+    // The swing knee's peak in early-to-mid swing (norm 62° at 74 %).
+    let (peak_i, peak) = knee.iter().enumerate().skip(31).fold((0, 0.0), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
+    assert!((70..=80).contains(&(2 * peak_i)) && (55.0..=70.0).contains(&peak), "{peak} at {} %", 2 * peak_i);
+}
