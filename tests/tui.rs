@@ -462,6 +462,44 @@ fn the_labs_state_asks_for_effects_and_the_loop_runs_them() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A bad typed value is told as the CLI tells it (tests/cli.rs): the key, what it needs with
+/// range and unit, and what was typed; the old value stays. It read "walk.speed_mps: expected
+/// a number, found ...; valid: ...", or the TOML parser's words for a typo.
+#[test]
+fn the_editor_says_what_the_key_needs_in_the_clis_words() {
+    let mut app = walked(None, 5);
+    select(&mut app, "walk.speed_mps");
+    let needs = "walk.speed_mps needs a number from 0.4 to 2 m/s";
+    for (typed, wanted) in [
+        ("abc", format!("{needs}, not \"abc\"")),
+        ("1.39abc", format!("{needs}, not 1.39abc")),
+        ("9.5", format!("{needs}, not 9.5")),
+        ("nan", format!("{needs}, not nan")),
+        ("", needs.to_string()),
+    ] {
+        key(&mut app, KeyCode::Enter);
+        keys(&mut app, typed);
+        if typed.is_empty() {
+            key(&mut app, KeyCode::Backspace);
+        }
+        key(&mut app, KeyCode::Enter);
+        let Some(Overlay::Typing { error: Some(error), .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
+        assert_eq!(error, &wanted);
+        assert!(screen(&app, 100, 30).contains(&wanted), "{typed}: the dialog shows it whole at 100x30");
+        key(&mut app, KeyCode::Esc);
+    }
+    assert_eq!(app.params.walk.speed_mps, 1.3);
+    select(&mut app, "terrain.kind");
+    key(&mut app, KeyCode::Enter);
+    keys(&mut app, "stair");
+    key(&mut app, KeyCode::Enter);
+    let Some(Overlay::Typing { error: Some(error), .. }) = &app.overlay else { panic!("{:?}", app.overlay) };
+    assert_eq!(
+        error,
+        "terrain.kind needs one of \"flat\", \"stairs\", \"slope\", \"random\", not \"stair\" (did you mean \"stairs\"?)"
+    );
+}
+
 /// The value editor opens with the value selected: typing replaces it (no backspacing),
 /// an arrow keeps it for editing.
 #[test]
@@ -634,4 +672,33 @@ fn optimiser_columns_are_whole_or_hidden() {
     assert!(narrow.contains("feas") && !narrow.contains(" us"), "{narrow}");
     let wide = header(&screen(&app, 160, 48)).expect("the table's header at 160x48");
     assert!(wide.contains("feas  us"), "{wide}");
+}
+
+/// A re-run of the optimiser is named in words over its row, apart from the walk's own steps:
+/// it was the step number with the method's first letter ("6g"), explained nowhere.
+#[test]
+fn the_optimisers_rerun_row_says_what_it_is() {
+    let mut app = walked(Some(&config("default")), 200);
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Tab);
+    }
+    assert_eq!(app.panel, Panel::Optimiser);
+    let step = app.walker.step_plans().last().unwrap().step;
+    for (press, method) in [('o', "thesis"), ('m', "golden")] {
+        key(&mut app, KeyCode::Char(press));
+        for (width, height) in [(80, 24), (160, 48)] {
+            let shown = screen(&app, width, height);
+            let lines: Vec<&str> = shown.lines().collect();
+            let header = lines.iter().position(|l| l.contains("ratio cost")).unwrap_or_else(|| panic!("{shown}"));
+            // The table's own cells: from the header's "step" on, counted in characters
+            // (the walk panel's braille to the left is three bytes a cell).
+            let column = lines[header].split("step").next().unwrap().chars().count();
+            let cell = |row: usize| lines[row].chars().skip(column).collect::<String>();
+            assert!(cell(header + 1).starts_with(&format!("re-run with {method}:")), "{width}x{height}:\n{shown}");
+            let rerun = cell(header + 2);
+            assert!(rerun.starts_with(&format!("{step} ")), "the step number alone: {rerun:?}");
+            assert!(cell(header + 3).starts_with("the walk's steps:"), "{width}x{height}:\n{shown}");
+            assert!(cell(header + 4).starts_with(&format!("{step} ")), "{width}x{height}:\n{shown}");
+        }
+    }
 }

@@ -18,13 +18,27 @@ pub struct ConfigError {
     pub message: String,
 }
 
+/// How a message about a value begins: it goes on from the key as one sentence ("walk.speed_mps
+/// needs a number from 0.4 to 2 m/s, not 9.5"), where others follow it after a colon.
+pub(crate) const NEEDS: &str = "needs ";
+
+impl ConfigError {
+    /// The key and what is wrong, without the place: what the lab's editor shows.
+    #[must_use]
+    pub fn what(&self) -> String {
+        if self.key.is_empty() {
+            self.message.clone()
+        } else if self.message.starts_with(NEEDS) {
+            format!("{} {}", self.key, self.message)
+        } else {
+            format!("{}: {}", self.key, self.message)
+        }
+    }
+}
+
 impl fmt::Display for ConfigError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.key.is_empty() {
-            write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.message)
-        } else {
-            write!(f, "{}:{}:{}: {}: {}", self.path, self.line, self.col, self.key, self.message)
-        }
+        write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.what())
     }
 }
 

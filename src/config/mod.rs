@@ -303,9 +303,16 @@ impl Loader {
             quoted = format!("\"{text}\"");
             text = &quoted;
         }
-        let parsed = match DeValue::parse(text) {
-            Ok(v) => v,
-            Err(e) => {
+        let parsed = match (DeValue::parse(text), spec) {
+            (Ok(v), _) => v,
+            // A typo in a key's value (`1.39abc`, nothing at all) is told in the key's terms,
+            // not the TOML parser's ("invalid float, expected nothing").
+            (Err(_), Some(spec)) if curve.is_none() => {
+                let found = (!text.is_empty()).then(|| echo::echo(text));
+                self.error(&value_at, key, needs(spec, found.as_deref()));
+                return;
+            }
+            (Err(e), _) => {
                 let message = echo::clip(e.message().trim(), echo::MESSAGE_CHARS - 20);
                 self.error(&value_at, key, format!("value is not TOML: {message}"));
                 return;
@@ -429,53 +436,51 @@ fn describe(v: &DeValue<'_>) -> String {
     }
 }
 
+/// A value's problem in the key's terms: what it needs, with its range and unit, and what it
+/// got ("needs a number from 0.4 to 2 m/s, not 9.5"). The one wording for the config file,
+/// `--set` and the lab's editor; [`ConfigError::what`] puts the key in front.
+pub(crate) fn needs(spec: &ParamSpec, found: Option<&str>) -> String {
+    let not = found.map_or(String::new(), |f| format!(", not {f}"));
+    format!("{}{}{not}", errors::NEEDS, spec.needs())
+}
+
 /// Checks one value against its key's kind.
 fn parse_value(spec: &ParamSpec, value: &DeValue<'_>) -> Result<Value, String> {
-    let valid = spec.valid_range();
+    let refused = || needs(spec, Some(&describe(value)));
     match spec.kind {
         Kind::Real { min, max, auto } => {
             if auto && matches!(value, DeValue::String(s) if s == "auto") {
                 return Ok(Value::Auto);
             }
-            let Some(x) = number(value) else {
-                return Err(format!("expected a number, found {}; valid: {valid}", describe(value)));
-            };
-            let written_infinite = matches!(value, DeValue::Float(f) if f.as_str().contains("inf"));
-            if x.is_nan() || written_infinite {
-                return Err(format!("{} is not a finite number; valid: {valid}", describe(value)));
+            // NaN, the infinities and literals too large for a float (1e999) fall outside
+            // every range; the message shows them as written, never as a formatted NaN.
+            match number(value) {
+                Some(x) if (min..=max).contains(&x) => Ok(Value::Real(x)),
+                _ => Err(refused()),
             }
-            // Out of range includes literals too large for a float (1e999).
-            if !(min..=max).contains(&x) {
-                return Err(format!("{} is out of range; valid: {valid}", describe(value)));
-            }
-            Ok(Value::Real(x))
         }
         Kind::Int { min, max } => {
             let n = match value {
                 DeValue::Integer(i) => i64::from_str_radix(&i.as_str().replace('_', ""), i.radix()).ok(),
                 _ => None,
             };
-            match (n, value) {
-                (Some(n), _) if (min..=max).contains(&n) => Ok(Value::Int(n)),
-                // Out of range, or too large for 64 bits.
-                (_, DeValue::Integer(_)) => Err(format!("{} is out of range; valid: {valid}", describe(value))),
-                _ => Err(format!("expected a whole number, found {}; valid: {valid}", describe(value))),
-            }
+            // Out of range, too large for 64 bits, or not a whole number at all.
+            n.filter(|n| (min..=max).contains(n)).map(Value::Int).ok_or_else(refused)
         }
         Kind::Bool => match value {
             DeValue::Boolean(b) => Ok(Value::Bool(*b)),
-            other => Err(format!("expected true or false, found {}", describe(other))),
+            _ => Err(refused()),
         },
         Kind::Choice(words) => {
             let DeValue::String(s) = value else {
-                return Err(format!("expected a quoted word, found {}; valid: {valid}", describe(value)));
+                return Err(refused());
             };
             match words.iter().find(|w| **w == s.as_ref()) {
                 Some(w) => Ok(Value::Word(w)),
                 None => {
                     let hint = did_you_mean(s, words.iter().copied())
-                        .map_or(String::new(), |w| format!("; did you mean \"{w}\"?"));
-                    Err(format!("{} is not a choice{hint}; valid: {valid}", echo::quoted(s)))
+                        .map_or(String::new(), |w| format!(" (did you mean \"{w}\"?)"));
+                    Err(format!("{}{hint}", refused()))
                 }
             }
         }
@@ -553,6 +558,6 @@ mod tests {
         assert_eq!(p.walk.speed_mps, 1.5);
         assert_eq!(p.terrain.kind, TerrainChoice::Slope);
         let e = load_text("", "c.toml", &["walk.speed_mps=fast".into()]).unwrap_err();
-        assert!(e.to_string().starts_with("--set #1:1:16: walk.speed_mps: expected a number"), "{e}");
+        assert_eq!(e.to_string(), "--set #1:1:16: walk.speed_mps needs a number from 0.4 to 2 m/s, not \"fast\"");
     }
 }

@@ -84,14 +84,28 @@ impl ParamSpec {
         self.key.split_once('.').map_or(self.key, |(_, n)| n)
     }
 
-    /// The valid values, as said in error messages and docs.
+    /// The valid values, as said in docs and the lab's editor.
     #[must_use]
     pub(crate) fn valid_range(&self) -> String {
+        let auto =
+            if matches!(self.kind, Kind::Real { auto: true, .. }) { ", or leave it out to derive it" } else { "" };
+        format!("{}{auto}", self.value_kind())
+    }
+
+    /// What a value of this key must be, as a problem with one says it after "KEY needs":
+    /// "a number from 0.4 to 2 m/s". An auto key's alternative is the word a value can
+    /// give (`auto`), since the file, `--set` and the lab's editor all take it.
+    #[must_use]
+    pub(crate) fn needs(&self) -> String {
+        let auto = if matches!(self.kind, Kind::Real { auto: true, .. }) { " or \"auto\"" } else { "" };
+        format!("{}{auto}", self.value_kind())
+    }
+
+    fn value_kind(&self) -> String {
         match self.kind {
-            Kind::Real { min, max, auto } => {
+            Kind::Real { min, max, .. } => {
                 let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
-                let auto = if auto { ", or leave it out to derive it" } else { "" };
-                format!("a number from {min} to {max}{unit}{auto}")
+                format!("a number from {min} to {max}{unit}")
             }
             Kind::Int { min, max } => format!("a whole number from {min} to {max}"),
             Kind::Choice(words) => {

@@ -102,12 +102,10 @@ impl App {
     pub(crate) fn set_typed(&mut self, text: &str) -> Result<(), String> {
         let spec = &PARAMS[self.selected];
         let text = text.trim();
-        if text.is_empty() || text == "auto" {
-            if matches!(spec.kind, Kind::Real { auto: true, .. }) {
-                self.set_value(spec, &Value::Auto);
-                return Ok(());
-            }
-            return Err(format!("{}: expected {}", spec.key, spec.valid_range()));
+        // Elsewhere, nothing typed is refused by the loader, in the key's terms.
+        if (text.is_empty() || text == "auto") && matches!(spec.kind, Kind::Real { auto: true, .. }) {
+            self.set_value(spec, &Value::Auto);
+            return Ok(());
         }
         let mut loader = Loader::from_params(self.params.clone());
         loader.apply_set(&format!("{}={text}", spec.key), 1);
@@ -118,9 +116,7 @@ impl App {
                 }
                 Ok(())
             }
-            Err(errors) => {
-                Err(errors.0.iter().map(|e| format!("{}: {}", e.key, e.message)).collect::<Vec<_>>().join("; "))
-            }
+            Err(errors) => Err(errors.0.iter().map(config::ConfigError::what).collect::<Vec<_>>().join("; ")),
         }
     }
 

@@ -23,6 +23,9 @@ fn curve_chart<DB: DrawingBackend>(
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FONT, 30))
         .margin(12)
+        // The last x label ("100") is centred on the axis's end: room for its right half
+        // (in the rightmost chart it ran off the image).
+        .margin_right(28)
         .x_label_area_size(55)
         .y_label_area_size(80)
         .build_cartesian_2d(0f64..100f64, y.clone())

@@ -136,27 +136,46 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     draw_landscape(f, chart_area, app, marker);
 }
 
-/// The optimiser's last steps (a re-run on top): side, ratio, cost against the fixed rule's,
-/// feasible candidates, search time.
+/// A line of the optimiser's table under its header.
+enum TableLine<'a> {
+    /// Words saying what the records below it are.
+    Caption(String),
+    Record(&'a crate::model::optimise::StepRecord),
+}
+
+/// The optimiser's last steps, a re-run on top with captions setting it apart from the walk's
+/// own steps: side, ratio, cost against the fixed rule's, feasible candidates, search time.
 fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
     let plans = app.walker.step_plans();
-    let rows_fit = usize::from(table_area.height.saturating_sub(1));
-    let records: Vec<&crate::model::optimise::StepRecord> =
-        app.rerun.iter().chain(plans.iter().rev().map(|p| &p.optimisation)).take(rows_fit).collect();
+    let walk_steps = plans.iter().rev().map(|p| TableLine::Record(&p.optimisation));
+    // The re-run is named in words: a method letter after its step number ("525t") was not
+    // explained anywhere, and the step's own row below it looked like a second re-run.
+    let mut lines: Vec<TableLine> = Vec::new();
+    if let Some(r) = &app.rerun {
+        let method = r.method.map_or(String::new(), |m| format!(" with {}", m.name()));
+        lines.push(TableLine::Caption(format!("re-run{method}:")));
+        lines.push(TableLine::Record(r));
+        lines.push(TableLine::Caption("the walk's steps:".into()));
+    }
+    let room = usize::from(table_area.height.saturating_sub(1));
+    lines.extend(walk_steps.take(room.saturating_sub(lines.len())));
+    lines.truncate(room);
+    if matches!(lines.last(), Some(TableLine::Caption(_))) {
+        lines.pop();
+    }
     let cost = |c: Option<f64>| c.map_or("unreach".into(), |c| format!("{c:.0}"));
-    let rerun_step = app.rerun.as_ref().map(|r| r.step);
     // Written cell by cell (see `put`): the cells a `Table` with these column widths and one
     // space between columns gives.
     const WIDTHS: [u16; 7] = [5, 1, 5, 7, 7, 5, 5];
     let buf = f.buffer_mut();
+    let end = table_area.x + table_area.width;
     let row_at = |buf: &mut Buffer, y: u16, cells: &[String], style: Style| {
         buf.set_style(Rect { x: table_area.x, y, width: table_area.width, height: 1 }, style);
-        let table_end = table_area.x + table_area.width;
         let mut x = table_area.x;
         // A column is shown whole or not at all: a number cut at the edge reads as another
         // (at 80 columns the search time 162 us showed as 16).
         for (text, width) in cells.iter().zip(WIDTHS) {
-            if x + width > table_end {
+            if x + width > end {
                 break;
             }
             put(buf, x, y, text, x + width, style);
@@ -167,16 +186,17 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
         let header = ["step", "", "ratio", "cost", "fixed", "feas", "us"].map(String::from);
         row_at(buf, table_area.y, &header, Style::new().bold());
     }
-    for (i, r) in records.iter().enumerate() {
-        let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
-        // The re-run sits on top, its step marked with the method it used.
-        let step = if i == 0 && rerun_step == Some(r.step) && app.rerun.is_some() {
-            format!("{}{}", r.step, r.method.map_or("", |m| &m.name()[..1]))
-        } else {
-            r.step.to_string()
+    for (line, y) in lines.iter().zip(table_area.y + 1..) {
+        let r = match line {
+            TableLine::Caption(text) => {
+                put(buf, table_area.x, y, text, end, Style::new().fg(Color::Yellow));
+                continue;
+            }
+            TableLine::Record(r) => r,
         };
+        let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
         let cells = [
-            step,
+            r.step.to_string(),
             r.side.suffix().to_string(),
             format!("{:.3}", r.chosen_ratio()),
             cost(r.chosen.cost),
@@ -184,7 +204,7 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
             format!("{}/{}", r.feasible, r.evaluations),
             if app.show_timings { format!("{:.0}", r.elapsed_us) } else { "-".into() },
         ];
-        row_at(buf, table_area.y + 1 + i as u16, &cells, style);
+        row_at(buf, y, &cells, style);
     }
 }
 
