@@ -1,5 +1,7 @@
 //! `gaitlab snapshot` over the 11 shipped configs (issue 20: ≤ 0.5 s on 2 cores): each walked
 //! for its `sim.cycles`, measured and compared with its `NAME.snap.json`, configs in parallel.
+//! Beside it the normative comparison and the fit, which measure walks the same way (issue 12:
+//! `compare` on a 10-cycle walk ≤ 50 ms, `fit` at one speed ≤ 10 s).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::path::PathBuf;
@@ -15,5 +17,22 @@ fn snapshot_corpus(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, snapshot_corpus);
+fn normative(c: &mut Criterion) {
+    use gaitlab::normative::{self, Reference};
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
+    let params = gaitlab::config::load(&path, &[]).unwrap();
+    let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
+    let mut group = c.benchmark_group("normative");
+    group.sample_size(10);
+    group.bench_function("compare_default_10_cycles", |b| {
+        b.iter(|| normative::compare(&path, &params, &reference).unwrap());
+    });
+    group.bench_function("fit_default_200_walks", |b| {
+        let options = gaitlab::fit::FitOptions::default();
+        b.iter(|| gaitlab::fit::fit(&path, &params, &reference, options).unwrap());
+    });
+    group.finish();
+}
+
+criterion_group!(benches, snapshot_corpus, normative);
 criterion_main!(benches);

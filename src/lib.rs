@@ -18,6 +18,7 @@ pub mod analysis;
 pub mod cli;
 pub mod config;
 pub mod error;
+pub mod fit;
 pub mod model;
 pub mod normative;
 pub mod output;

@@ -12,6 +12,9 @@ use crate::model::params::WalkParams;
 use crate::snapshot::measure;
 use std::path::Path;
 
+/// How the built-in reference is named in tables and files.
+pub const BUILT_IN_SOURCE: &str = "Fukuchi, Fukuchi & Duarte 2018 (24 young adults, treadmill, CC BY 4.0)";
+
 /// The built-in reference's text.
 pub const BUILT_IN: &str = include_str!("../data/normative/normative_adult_walking.csv");
 
@@ -137,7 +140,13 @@ fn range(v: &[f64]) -> f64 {
 /// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
 /// every 2 % of the right gait cycle.
 pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Result<Comparison> {
-    let walk = measure::measure(path, params)?;
+    Ok(compare_measured(&measure::measure(path, params)?, reference))
+}
+
+/// A walk already measured against `reference` (the fit measures once for this and for its
+/// constraints).
+#[must_use]
+pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comparison {
     let speed_mps = walk.summary.iter().find(|(k, _)| k == "speed_mps").map_or(f64::NAN, |(_, v)| *v);
     let mut curves = Vec::new();
     for ((stem, name, shape_only), (_, mean, sd)) in COMPARED.iter().zip(&reference.curves) {
@@ -172,7 +181,7 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Resul
             reference_min: extreme(&theirs_pts, false),
         });
     }
-    Ok(Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves })
+    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves }
 }
 
 #[cfg(test)]

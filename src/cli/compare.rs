@@ -15,10 +15,7 @@ pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[Str
             let text = config::read_source(file)?;
             (Reference::parse(&text, &file.display().to_string())?, file.display().to_string())
         }
-        None => (
-            Reference::parse(normative::BUILT_IN, "built-in reference")?,
-            "Fukuchi, Fukuchi & Duarte 2018 (24 young adults, treadmill, CC BY 4.0)".to_string(),
-        ),
+        None => (Reference::parse(normative::BUILT_IN, "built-in reference")?, normative::BUILT_IN_SOURCE.to_string()),
     };
     let comparison = normative::compare(path, &params, &reference)?;
     let stdout = io::stdout();

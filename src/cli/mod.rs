@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 
 mod common;
 mod compare;
+mod fit;
 mod ik;
 mod optimise;
 mod snapshot;
@@ -171,6 +172,29 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// Calibrate a config to measured human gait: move the keys that shape the joint curves to bring hip, knee and ankle closest to the reference, skate, ground and reach kept
+    Fit {
+        /// Config file.
+        config: PathBuf,
+        /// A reference CSV in the built-in file's columns [default: Fukuchi et al. 2018, data/normative/]
+        #[arg(long, value_name = "FILE")]
+        reference: Option<PathBuf>,
+        /// Write the fitted config (the input with the fitted keys set, comments kept) to FILE; `-` for stdout
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+        /// Walks the search may cost, 10 to 5000
+        #[arg(long, default_value_t = 200)]
+        evaluations: u32,
+        /// Gait cycles of each walk, 4 to 50 (a reach failure in a later cycle is not seen)
+        #[arg(long, default_value_t = 10)]
+        cycles: u32,
+        /// One JSON object: keys, costs and curves before and after
+        #[arg(long)]
+        json: bool,
+        /// Override a key: --set walk.speed_mps=1.0 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// The walk's joint curves against measured human gait (mean +- SD every 1 % of the cycle)
     Compare {
         /// Config file.
@@ -255,6 +279,10 @@ pub fn run(cli: Cli) -> u8 {
                 sets: &sets,
             }),
         ),
+        Some(Command::Fit { config, reference, out, evaluations, cycles, json, sets }) => {
+            let options = fit::Args { reference: reference.as_deref(), out: out.as_deref(), evaluations, cycles, json };
+            ("fit", fit::run(&config, &options, &sets))
+        }
         Some(Command::Compare { config, reference, json, sets }) => {
             ("compare", compare::run(&config, reference.as_deref(), json, &sets))
         }

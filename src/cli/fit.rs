@@ -1,0 +1,139 @@
+//! `gaitlab fit`: a config calibrated to a normative reference, as a table (or JSON) and, with
+//! `--out`, a config file.
+
+use super::common::{in_range, stdout_written};
+use crate::config::{self, schema::PARAMS};
+use crate::error::{Error, Result};
+use crate::fit::{self, FIT_KEYS, FitOptions, FitResult};
+use crate::normative::{self, Comparison, Reference};
+use crate::output::{self, FileTarget};
+use std::io::{self, IsTerminal, Write};
+use std::path::Path;
+
+/// The command's options.
+pub(super) struct Args<'a> {
+    pub(super) reference: Option<&'a Path>,
+    pub(super) out: Option<&'a Path>,
+    pub(super) evaluations: u32,
+    pub(super) cycles: u32,
+    pub(super) json: bool,
+}
+
+pub(super) fn run(path: &Path, args: &Args<'_>, sets: &[String]) -> Result<()> {
+    let evaluations = in_range("--evaluations", args.evaluations, 10..=5000, "10 to 5000")?;
+    let cycles = in_range("--cycles", args.cycles, 4..=50, "4 to 50")?;
+    // Refused before any walking: a fit takes seconds.
+    let target = args.out.map(FileTarget::resolve).transpose()?;
+    let (text, params) = config::load_with_text(path, sets)?;
+    let (reference, source) = match args.reference {
+        Some(file) => {
+            let text = config::read_source(file)?;
+            (Reference::parse(&text, &file.display().to_string())?, file.display().to_string())
+        }
+        None => (Reference::parse(normative::BUILT_IN, "built-in reference")?, normative::BUILT_IN_SOURCE.to_string()),
+    };
+    if io::stderr().is_terminal() {
+        eprintln!("gaitlab fit: up to {evaluations} walks of {cycles} cycles");
+    }
+    let started = std::time::Instant::now();
+    let result = fit::fit(path, &params, &reference, FitOptions { evaluations, cycles })?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(target) = target {
+        let fitted = fitted_config(&text, &params, &result, &source, reference.speed_mps)?;
+        output::write_file(&target, |out: &mut dyn Write| out.write_all(fitted.as_bytes()))?;
+    }
+    let stdout = io::stdout();
+    let mut out = io::BufWriter::new(stdout.lock());
+    let written = if args.json {
+        write_json(&mut out, &result, seconds)
+    } else {
+        write_table(&mut out, path, &source, &result, seconds, args.out)
+    };
+    stdout_written(written.and_then(|()| out.flush()))
+}
+
+/// The input config with the fitted keys (and any `--set` ones) written in, comments kept,
+/// under a header saying what was fitted against what.
+fn fitted_config(
+    text: &str,
+    params: &crate::model::params::WalkParams,
+    result: &FitResult,
+    source: &str,
+    reference_speed: f64,
+) -> Result<String> {
+    let read = config::load_text(text, "config", &[])?;
+    let mut keys: Vec<&str> = PARAMS.iter().filter(|p| (p.get)(&read) != (p.get)(params)).map(|p| p.key).collect();
+    keys.extend(FIT_KEYS.iter().map(|k| k.key));
+    let body = config::edit::edited_text(text, &result.params, &keys).map_err(Error::Usage)?;
+    let (before, after) = (rms_line(&result.comparison.0), rms_line(&result.comparison.1));
+    Ok(format!(
+        "# Fitted by `gaitlab fit` against {source} at {reference_speed:.3} m/s.\n\
+         # Hip / knee / ankle RMS difference (deg): {before} before, {after} after ({} walks).\n\
+         # Keys fitted: {}.\n\n{body}",
+        result.evaluations,
+        FIT_KEYS.iter().map(|k| k.key).collect::<Vec<_>>().join(", ")
+    ))
+}
+
+fn rms_line(c: &Comparison) -> String {
+    c.curves.iter().take(3).map(|k| format!("{:.2}", k.rms_deg)).collect::<Vec<_>>().join(" / ")
+}
+
+fn write_table(
+    out: &mut dyn Write,
+    path: &Path,
+    source: &str,
+    r: &FitResult,
+    seconds: f64,
+    written: Option<&Path>,
+) -> io::Result<()> {
+    let (before, after) = &r.comparison;
+    writeln!(
+        out,
+        "# {} at {:.3} m/s against {source} at {:.3} m/s: {} walks in {seconds:.1} s",
+        path.display(),
+        before.speed_mps,
+        before.reference_speed_mps,
+        r.evaluations
+    )?;
+    writeln!(out, "{:<28} {:>9} {:>9}  range", "key", "start", "fitted")?;
+    for ((k, start), fitted) in FIT_KEYS.iter().zip(&r.start).zip(&r.fitted) {
+        writeln!(out, "{:<28} {start:>9.3} {fitted:>9.3}  {} to {}", k.key, k.min, k.max)?;
+    }
+    writeln!(
+        out,
+        "{:<12} {:>10} {:>9} {:>8} {:>7} {:>9} {:>8}",
+        "curve", "rms_before", "rms_after", "r_before", "r_after", "out2%_bef", "out2%_aft"
+    )?;
+    for (b, a) in before.curves.iter().zip(&after.curves).take(3) {
+        writeln!(
+            out,
+            "{:<12} {:>10.2} {:>9.2} {:>8.3} {:>7.3} {:>9.0} {:>8.0}",
+            b.curve, b.rms_deg, a.rms_deg, b.pearson_r, a.pearson_r, b.outside_2sd_pct, a.outside_2sd_pct
+        )?;
+    }
+    writeln!(out, "cost (mean RMS of hip, knee and ankle, deg, + penalties): {:.3} -> {:.3}", r.cost.0, r.cost.1)?;
+    match written {
+        Some(p) => writeln!(out, "wrote {}", p.display()),
+        None => writeln!(out, "(--out FILE writes the fitted config)"),
+    }
+}
+
+fn write_json(out: &mut dyn Write, r: &FitResult, seconds: f64) -> io::Result<()> {
+    let keys: Vec<serde_json::Value> = FIT_KEYS
+        .iter()
+        .zip(&r.start)
+        .zip(&r.fitted)
+        .map(|((k, s), f)| serde_json::json!({"key": k.key, "start": s, "fitted": f, "min": k.min, "max": k.max}))
+        .collect();
+    let line = serde_json::json!({
+        "keys": keys,
+        "cost_before": r.cost.0,
+        "cost_after": r.cost.1,
+        "evaluations": r.evaluations,
+        "seconds": seconds,
+        "curves_before": r.comparison.0.curves,
+        "curves_after": r.comparison.1.curves,
+    });
+    writeln!(out, "{line}")
+}

@@ -1,0 +1,219 @@
+//! Calibrating a config to a normative reference (`gaitlab fit`): the config keys that shape
+//! the sagittal joint curves, moved within bounds by a Nelder–Mead search to bring the hip,
+//! knee and ankle curves closest to the reference, every walk invariant kept.
+//!
+//! Why Nelder–Mead, written here: the cost is a whole walk (no gradient; finite differences
+//! would cost a walk per key per step and the reach guard makes it piecewise), there are six
+//! keys, and the search must be deterministic and bounded. The method is thirty lines; a
+//! crate (argmin) would bring its solver framework for the same loop.
+//!
+//! The cost is the mean RMS difference (deg) of the three curves, plus penalties that make a
+//! walk that skates, sinks into the ground or fails to reach worse than any that does not.
+
+use crate::config::schema::{self, Value};
+use crate::error::Result;
+use crate::model::params::{Resolved, WalkParams};
+use crate::normative::{self, Comparison, Reference};
+use crate::snapshot::measure;
+use std::path::Path;
+
+/// A key the fit moves, with the range it may take.
+#[derive(Clone, Copy, Debug)]
+pub struct FitKey {
+    /// The config key.
+    pub key: &'static str,
+    /// Least value.
+    pub min: f64,
+    /// Greatest value.
+    pub max: f64,
+    /// The key's value in force (derived keys have no value of their own until set).
+    start: fn(&WalkParams, &Resolved) -> f64,
+}
+
+/// The keys fitted. Bounds are the parts of each key's valid range a walk can use.
+pub const FIT_KEYS: [FitKey; 6] = [
+    FitKey { key: "pelvis.midstance_drop_cm", min: 0.0, max: 5.0, start: |_, r| r.midstance_drop * 100.0 },
+    FitKey { key: "pelvis.vertical_range_cm", min: 0.5, max: 6.0, start: |_, r| r.vertical_range * 100.0 },
+    FitKey { key: "pelvis.midstance_offset_cm", min: 5.0, max: 25.0, start: |_, r| r.midstance_offset * 100.0 },
+    FitKey { key: "legs.foot_flat", min: 0.03, max: 0.2, start: |_, r| r.foot_flat },
+    FitKey { key: "legs.heel_rise", min: 0.22, max: 0.45, start: |_, r| r.heel_rise },
+    FitKey { key: "legs.knee_lift_cm", min: 0.0, max: 8.0, start: |_, r| r.knee_lift * 100.0 },
+];
+
+/// How long the fit may search.
+#[derive(Clone, Copy, Debug)]
+pub struct FitOptions {
+    /// Walks the search may cost, the start's included.
+    pub evaluations: u32,
+    /// Gait cycles of each walk (at least 4: the measure needs two steady cycles).
+    pub cycles: u32,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        FitOptions { evaluations: 200, cycles: 10 }
+    }
+}
+
+/// What the fit found.
+#[derive(Clone, Debug)]
+pub struct FitResult {
+    /// The keys' values at the start, in [`FIT_KEYS`] order.
+    pub start: Vec<f64>,
+    /// Their fitted values.
+    pub fitted: Vec<f64>,
+    /// Cost at the start and at the end (mean RMS, deg, plus penalties).
+    pub cost: (f64, f64),
+    /// The comparison at the start and at the end.
+    pub comparison: (Comparison, Comparison),
+    /// Walks made.
+    pub evaluations: u32,
+    /// The fitted parameters (the config's, with the fitted keys set).
+    pub params: WalkParams,
+}
+
+/// The fit's cost of one walk, and its comparison; +∞ for a walk that cannot be measured.
+fn cost_of(path: &Path, params: &WalkParams, reference: &Reference) -> (f64, Option<Comparison>) {
+    let Ok(walk) = measure::measure(path, params) else { return (f64::INFINITY, None) };
+    let figure = |k: &str| walk.summary.iter().find(|(n, _)| n == k).map_or(f64::NAN, |(_, v)| *v);
+    let c = normative::compare_measured(&walk, reference);
+    let rms: f64 = c.curves.iter().take(3).map(|k| k.rms_deg).sum::<f64>() / 3.0;
+    let penalty = 10.0 * figure("reach_failures")
+        + 10.0 * (figure("foot_skate_mm") - 1.0).max(0.0)
+        + 10.0 * (figure("terrain_penetration_mm") - 0.1).max(0.0);
+    let cost = rms + penalty;
+    if cost.is_finite() { (cost, Some(c)) } else { (f64::INFINITY, Some(c)) }
+}
+
+/// `params` with the fitted keys at `u` (each in 0..1 of its range).
+fn with_keys(params: &WalkParams, u: &[f64]) -> WalkParams {
+    let mut p = params.clone();
+    for (k, &x) in FIT_KEYS.iter().zip(u) {
+        let spec = schema::spec(k.key).expect("fitted keys are config keys");
+        (spec.set)(&mut p, &Value::Real(k.min + (k.max - k.min) * x.clamp(0.0, 1.0)));
+    }
+    p
+}
+
+/// Fits `params` (the config at `path`) to `reference`.
+pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: FitOptions) -> Result<FitResult> {
+    let mut walked = params.clone();
+    walked.sim.cycles = options.cycles.max(*measure::CYCLES.start());
+    let r = params.resolve();
+    let start: Vec<f64> = FIT_KEYS.iter().map(|k| (k.start)(params, &r)).collect();
+    let u0: Vec<f64> =
+        FIT_KEYS.iter().zip(&start).map(|(k, &v)| ((v - k.min) / (k.max - k.min)).clamp(0.0, 1.0)).collect();
+    // The start as the config has it (not clamped into the bounds) is what the fit must beat.
+    let start_comparison = normative::compare(path, &walked, reference)?;
+    let (start_cost, _) = cost_of(path, &walked, reference);
+    let evaluations = std::cell::Cell::new(1_u32);
+    let mut f = |u: &[f64]| {
+        evaluations.set(evaluations.get() + 1);
+        cost_of(path, &with_keys(&walked, u), reference).0
+    };
+    // Nelder–Mead settles in the first dip it finds; restarted around its answer with a fresh
+    // simplex while walks remain, it leaves dips narrower than a tenth of a range (measured on
+    // the default walk: 7.49 -> 6.67 in one run, see benches/README.md for restarts).
+    let mut budget = options.evaluations.saturating_sub(1);
+    let (mut best_u, mut best_cost) = (u0.clone(), f64::INFINITY);
+    while budget > 2 * FIT_KEYS.len() as u32 {
+        let before = evaluations.get();
+        let (u, cost) = nelder_mead(&mut f, &best_u, budget);
+        budget = budget.saturating_sub(evaluations.get() - before);
+        if cost >= best_cost - 1e-4 {
+            break;
+        }
+        (best_u, best_cost) = (u, cost);
+    }
+    let (fitted_params, cost, best) = if best_cost < start_cost {
+        (with_keys(params, &best_u), best_cost, best_u)
+    } else {
+        (params.clone(), start_cost, u0)
+    };
+    let mut fitted_walked = fitted_params.clone();
+    fitted_walked.sim.cycles = walked.sim.cycles;
+    let end_comparison = normative::compare(path, &fitted_walked, reference)?;
+    Ok(FitResult {
+        start,
+        fitted: FIT_KEYS.iter().zip(&best).map(|(k, x)| k.min + (k.max - k.min) * x).collect(),
+        cost: (start_cost, cost),
+        comparison: (start_comparison, end_comparison),
+        evaluations: evaluations.get(),
+        params: fitted_params,
+    })
+}
+
+/// Nelder–Mead (reflection 1, expansion 2, contraction ½, shrink ½) in the unit cube from
+/// `x0`, at most `budget` evaluations of `f`. Returns the best point and its value.
+fn nelder_mead(f: &mut dyn FnMut(&[f64]) -> f64, x0: &[f64], budget: u32) -> (Vec<f64>, f64) {
+    let n = x0.len();
+    let clamp = |x: Vec<f64>| x.into_iter().map(|v| v.clamp(0.0, 1.0)).collect::<Vec<_>>();
+    let mut used = 0;
+    let mut eval = |x: &[f64], used: &mut u32| {
+        *used += 1;
+        f(x)
+    };
+    // The first simplex: a tenth of each range from the start, inward at a bound.
+    let mut simplex: Vec<(Vec<f64>, f64)> = Vec::with_capacity(n + 1);
+    simplex.push((x0.to_vec(), eval(x0, &mut used)));
+    for i in 0..n {
+        let mut x = x0.to_vec();
+        x[i] += if x[i] > 0.9 { -0.1 } else { 0.1 };
+        let v = eval(&x, &mut used);
+        simplex.push((x, v));
+    }
+    while used + 2 <= budget {
+        simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let spread = simplex.iter().map(|s| s.1).fold(f64::NEG_INFINITY, f64::max) - simplex[0].1;
+        if spread.is_finite() && spread < 1e-4 {
+            break;
+        }
+        let centroid: Vec<f64> = (0..n).map(|j| simplex[..n].iter().map(|s| s.0[j]).sum::<f64>() / n as f64).collect();
+        let toward = |t: f64| clamp((0..n).map(|j| centroid[j] + t * (simplex[n].0[j] - centroid[j])).collect());
+        let reflected = toward(-1.0);
+        let fr = eval(&reflected, &mut used);
+        if fr < simplex[0].1 {
+            let expanded = toward(-2.0);
+            let fe = eval(&expanded, &mut used);
+            simplex[n] = if fe < fr { (expanded, fe) } else { (reflected, fr) };
+        } else if fr < simplex[n - 1].1 {
+            simplex[n] = (reflected, fr);
+        } else {
+            let contracted = toward(0.5);
+            let fc = eval(&contracted, &mut used);
+            if fc < simplex[n].1 {
+                simplex[n] = (contracted, fc);
+            } else {
+                // Shrink toward the best: n more walks.
+                if used + n as u32 > budget {
+                    break;
+                }
+                let best = simplex[0].0.clone();
+                for s in simplex.iter_mut().skip(1) {
+                    s.0 = clamp((0..n).map(|j| best[j] + 0.5 * (s.0[j] - best[j])).collect());
+                    s.1 = eval(&s.0, &mut used);
+                }
+            }
+        }
+    }
+    simplex.into_iter().min_by(|a, b| a.1.total_cmp(&b.1)).expect("a simplex has points")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nelder_mead_finds_a_bowls_bottom_inside_the_cube_and_stays_in_it() {
+        let mut calls = 0;
+        let mut bowl = |x: &[f64]| {
+            calls += 1;
+            (x[0] - 0.3).powi(2) + 2.0 * (x[1] - 0.7).powi(2) + (x[2] + 0.5).powi(2)
+        };
+        let (x, v) = nelder_mead(&mut bowl, &[0.5, 0.5, 0.5], 300);
+        assert!(calls <= 300, "{calls}");
+        assert!((x[0] - 0.3).abs() < 0.01 && (x[1] - 0.7).abs() < 0.01, "{x:?}");
+        // The third minimum lies outside the cube: the search ends on its face.
+        assert!(x[2] == 0.0 && (v - 0.25).abs() < 1e-3, "{x:?} {v}");
+    }
+}
