@@ -14,7 +14,8 @@ fn json(out: &std::process::Output) -> serde_json::Value {
 }
 
 /// A deliberately bad start: the pelvis nearly flat and far ahead of the foot, a slow foot
-/// flat and a high knee lift (hip / knee / ankle RMS 14.2 / 15.8 / 16.2 deg).
+/// flat and a high knee lift (hip / knee / ankle RMS 8.4 / 15.5 / 16.2 deg; measured
+/// 2026-11-23 to end at 4.3 / 8.2 / 4.5, cost 13.37 -> 5.66).
 const BAD: [&str; 8] = [
     "--set",
     "pelvis.vertical_range_cm=0.6",
@@ -31,13 +32,12 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
     let mut args = vec!["fit", "configs/default.toml", "--json"];
     args.extend(BAD);
     let (a, b) = (json(&gaitlab(&args)), json(&gaitlab(&args)));
-    // Measured 2026-11-23: see the assertion's neighbour in benches/README.md (fit).
     let (before, after) = (a["cost_before"].as_f64().unwrap(), a["cost_after"].as_f64().unwrap());
-    assert!(before > 14.0 && after < 7.2, "{before} -> {after}");
-    for (curve, most) in [("hip_flex", 6.6), ("knee_flex", 10.5), ("ankle_dorsi", 4.8)] {
+    assert!(before > 12.0 && after < 6.2, "{before} -> {after}");
+    for (curve, most) in [("hip_flex", 4.8), ("knee_flex", 8.7), ("ankle_dorsi", 5.0)] {
         let k = a["curves_after"].as_array().unwrap().iter().find(|k| k["curve"] == curve).unwrap();
         assert!(k["rms_deg"].as_f64().unwrap() <= most, "{curve}: {k}");
-        assert!(k["pearson_r"].as_f64().unwrap() >= 0.94, "{curve}: {k}");
+        assert!(k["pearson_r"].as_f64().unwrap() >= 0.9, "{curve}: {k}");
     }
     // The same walks in the same order: everything but the clock is the same.
     let strip = |mut v: serde_json::Value| {

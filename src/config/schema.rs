@@ -253,6 +253,7 @@ pub static PARAMS: &[ParamSpec] = &[
     auto!(pelvis => midstance_drop_cm, "cm", 0.0, 10.0, "How far below standing hip height the pelvis passes at mid-stance (its highest point)"),
     real!(pelvis => midstance_offset_cm, "cm", -10.0, 30.0, "Pelvis ahead of the stance heel at mid-stance"),
     real!(pelvis => trunk_lean_deg, "deg", -10.0, 30.0, "Forward lean of the trunk"),
+    real!(pelvis => rest_tilt_deg, "deg", 0.0, 20.0, "Anterior tilt of the pelvis's anatomical frame (the plane of the iliac spines) when standing: the joint table's hip flexion and pelvic tilt are measured against it, as gait labs measure them (Fukuchi 2018's adults: 10 on average); the figure is unchanged"),
     real!(legs => foot_flat, "cycle", 0.03, 0.3, "Cycle phase at which the loading response ends and the foot is flat"),
     real!(legs => heel_rise, "cycle", 0.15, 0.5, "Cycle phase at which the heel rises (end of midstance)"),
     auto!(legs => toe_off, "cycle", 0.51, 0.75, "Cycle phase of toe-off; stance lasts this share of the cycle, double support twice (toe_off - 0.5)"),

@@ -64,6 +64,7 @@ pub struct PelvisParams {
     pub(crate) midstance_drop_cm: Option<f64>,
     pub(crate) midstance_offset_cm: f64,
     pub(crate) trunk_lean_deg: f64,
+    pub(crate) rest_tilt_deg: f64,
 }
 
 /// `[legs]`.
@@ -351,6 +352,7 @@ impl Default for WalkParams {
                 midstance_drop_cm: None,
                 midstance_offset_cm: 15.0,
                 trunk_lean_deg: 3.0,
+                rest_tilt_deg: 10.0,
             },
             legs: LegParams {
                 foot_flat: 0.12,
@@ -437,6 +439,9 @@ pub struct Resolved {
     pub(crate) midstance_offset: f64,
     /// Forward lean of the trunk (rad).
     pub(crate) trunk_lean: f64,
+    /// Anterior tilt of the pelvis's anatomical frame against its bone (rad): what clinical
+    /// hip flexion and pelvic tilt are measured against.
+    pub(crate) rest_tilt: f64,
     /// Foot turnout (rad).
     pub turnout: f64,
     /// Extra heel height in mid-swing (m).
@@ -534,6 +539,7 @@ impl WalkParams {
             midstance_drop: p.midstance_drop_cm.unwrap_or((1.5 + 2.0 * fast).max(0.5)) / 100.0,
             midstance_offset: p.midstance_offset_cm / 100.0,
             trunk_lean: deg(p.trunk_lean_deg),
+            rest_tilt: deg(p.rest_tilt_deg),
             turnout: deg(self.legs.turnout_deg),
             knee_lift: self.legs.knee_lift_cm / 100.0,
             clearance: self.legs.clearance_cm / 100.0,

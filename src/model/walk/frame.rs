@@ -103,10 +103,16 @@ impl Walker {
     pub fn frame(&self, frame: u64) -> Frame {
         let pose = self.pose();
         let pelvis = self.pelvis();
+        // Clinical hip flexion and pelvic tilt are taken against the pelvis's anatomical frame,
+        // tipped forward of the bone by the rest tilt: in the sagittal plane, a constant added
+        // to both (a 3-D rotation of the frame would also mix obliquity into hip flexion). The
+        // bone itself (the pose, BVH) does not move.
+        let rest_tilt = self.resolved().rest_tilt;
         let legs = Side::BOTH.map(|side| {
             let leg = self.leg(side);
             let p = leg.pose;
-            let angles = leg_angles(pelvis.rotation, &p, side.sign());
+            let mut angles = leg_angles(pelvis.rotation, &p, side.sign());
+            angles.hip_flex_deg += rest_tilt.to_degrees();
             let chest = pose.rot(Bone::Chest);
             let upper_dir = pose.pos(Bone::forearm(side)) - pose.pos(Bone::upper_arm(side));
             let fore_dir = pose.pos(Bone::hand(side)) - pose.pos(Bone::forearm(side));
@@ -145,7 +151,7 @@ impl Walker {
             time_s: self.time_s(),
             support,
             pelvis: pelvis.position,
-            pelvis_tilt_deg: pelvis.tilt.to_degrees(),
+            pelvis_tilt_deg: (pelvis.tilt + rest_tilt).to_degrees(),
             pelvis_obliquity_deg: pelvis.obliquity.to_degrees(),
             pelvis_rotation_deg: pelvis.rotation_angle.to_degrees(),
             legs,
