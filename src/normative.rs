@@ -7,8 +7,10 @@
 //! the measured tilt carries a ~10° offset that depends on the marker model, the walk's tilt
 //! is a swing about its posture.
 
+use crate::analysis::Run;
 use crate::error::{Error, Result};
 use crate::model::params::WalkParams;
+use crate::report::metrics::Summary;
 use crate::snapshot::measure;
 use std::path::Path;
 
@@ -141,6 +143,18 @@ fn range(v: &[f64]) -> f64 {
 /// every 2 % of the right gait cycle.
 pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Result<Comparison> {
     Ok(compare_measured(&measure::measure(path, params)?, reference))
+}
+
+/// A walk already recorded and summarised (the report's: `cycles` of the config at `path`)
+/// against `reference`, measured and compared exactly as [`compare`] does.
+pub fn compare_recorded(
+    path: &Path,
+    cycles: u32,
+    run: &Run,
+    summary: &Summary,
+    reference: &Reference,
+) -> Result<Comparison> {
+    Ok(compare_measured(&measure::recorded(path, cycles, run, summary)?, reference))
 }
 
 /// A walk already measured against `reference` (the fit measures once for this and for its

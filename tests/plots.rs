@@ -114,3 +114,52 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
     assert_eq!(legends, 3, "the normative band is named in the hip, knee and ankle charts");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The pelvis plot draws measured adults' mean +- 1 SD (grey) behind the walk's tilt,
+/// obliquity and rotation, and no band under displacement and velocity (the reference has
+/// none); the tilt band is a shape about the walk's mean, and the legend says so.
+#[test]
+fn the_pelvis_plot_draws_measured_adult_gait_behind_the_angles() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-pelvis-norm-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report(&dir);
+    let svg = std::fs::read_to_string(dir.join("plots/pelvis.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let shapes: Vec<roxmltree::Node<'_, '_>> =
+        doc.descendants().filter(|n| n.has_tag_name("polygon") || n.has_tag_name("polyline")).collect();
+    let grey = |n: &roxmltree::Node<'_, '_>| n.attribute("fill") == Some("#787878");
+    let bands: Vec<usize> = shapes.iter().enumerate().filter(|(_, n)| grey(n)).map(|(i, _)| i).collect();
+    assert_eq!(bands.len(), 3, "a grey band in the tilt, obliquity and rotation panels");
+    // The panel of a shape (column, row), from its points; the walk (red, band and line)
+    // comes after the grey band of its panel, so it is drawn over it.
+    let panel = |n: &roxmltree::Node<'_, '_>| {
+        let points: Vec<(f64, f64)> = n
+            .attribute("points")
+            .unwrap()
+            .split_whitespace()
+            .map(|p| p.split_once(',').map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap())).unwrap())
+            .collect();
+        let cell = |(x, y): (f64, f64)| ((x / (1600.0 / 3.0)) as u32, u32::from(y > 500.0));
+        let first = cell(points[0]);
+        assert!(points.iter().all(|p| cell(*p) == first), "a shape across panels");
+        first
+    };
+    let red = |n: &roxmltree::Node<'_, '_>| {
+        n.attribute("fill") == Some("#C82828") || n.attribute("stroke") == Some("#C82828")
+    };
+    let mut panels: Vec<(u32, u32)> = bands.iter().map(|&i| panel(&shapes[i])).collect();
+    for (&i, at) in bands.iter().zip(&panels) {
+        let walk: Vec<usize> = (0..shapes.len()).filter(|&k| red(&shapes[k]) && panel(&shapes[k]) == *at).collect();
+        assert!(!walk.is_empty() && walk.iter().all(|&k| k > i), "panel {at:?}: the walk is drawn under the band");
+    }
+    panels.sort_unstable();
+    assert_eq!(panels, [(0, 0), (1, 0), (2, 0)], "bands in the top row only (tilt, obliquity, rotation)");
+    let texts: Vec<&str> = doc.descendants().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    assert_eq!(
+        texts.iter().filter(|t| t.contains("Fukuchi 2018")).count(),
+        3,
+        "the source named in each band's legend"
+    );
+    assert_eq!(texts.iter().filter(|t| t.contains("about the walk's mean")).count(), 1, "the tilt band is a shape");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -271,9 +271,70 @@ fn a_comparison_report_names_both_walks_in_legends_and_columns() {
         let words: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
         assert!(words.contains(&"default") && words.contains(&"elderly"), "{plot} legend lacks a walk's name");
     }
-    // summary.json stays the report's own walk.
+    // summary.json stays the report's own walk, and so does the table against the norms.
     let json: serde_json::Value = serde_json::from_str(&read(&dir, "summary.json")).unwrap();
     assert!((json["speed_mps"].as_f64().unwrap() - 1.3).abs() < 0.01);
+    assert!(md.contains("The table is for `default`, the report's own walk"), "{md}");
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// `value @ pct` of an extremes cell.
+fn at(cell: &str) -> (f64, f64) {
+    let (v, p) = cell.split_once(" @ ").unwrap_or_else(|| panic!("not `value @ %`: {cell}"));
+    (v.parse().unwrap(), p.parse().unwrap())
+}
+
+/// summary.md's "Against measured gait" reads as `gaitlab compare --json` for the same walk
+/// (the same cycles: `--cycles` for the report, `sim.cycles` for compare), and summary.json's
+/// `normative_*` keys, appended after the interface's, are its figures.
+#[test]
+fn the_summary_compares_the_walk_with_measured_gait_as_compare_does() {
+    let dir = temp("normative");
+    let out = gaitlab(&["report", "configs/brisk.toml", "--out", dir.to_str().unwrap(), "--cycles", "5"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let o = gaitlab(&["compare", "configs/brisk.toml", "--json", "--set", "sim.cycles=5"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let lines: Vec<serde_json::Value> =
+        String::from_utf8_lossy(&o.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let md = read(&dir, "summary.md");
+    let section = &md[md.find("\n## Against measured gait\n").expect("the section")..];
+    let speed = lines[0]["speed_mps"].as_f64().unwrap();
+    assert!(section.contains(&format!("`brisk` at {speed:.3} m/s against Fukuchi")), "{section}");
+    assert!(section.contains("at 1.245 m/s"), "the reference's speed: {section}");
+    assert!(!section.contains("The table is for"), "a lone walk needs no such note");
+    let num = |v: &serde_json::Value| v.as_f64().unwrap();
+    let pair = |v: &serde_json::Value| (num(&v[0]), num(&v[1]));
+    for l in &lines {
+        let stem = l["curve"].as_str().unwrap();
+        let row = section.lines().find(|r| r.contains(&format!("(`{stem}`)"))).unwrap_or_else(|| panic!("{stem}"));
+        let cells: Vec<&str> = row.split('|').map(str::trim).filter(|c| !c.is_empty()).collect();
+        assert_eq!(cells.len(), 10, "{row}");
+        let figures = ["rms_deg", "pearson_r", "outside_1sd_pct", "outside_2sd_pct", "range_difference_deg"];
+        for (cell, key) in cells[1..6].iter().zip(figures) {
+            let ours: f64 = cell.parse().unwrap();
+            assert!((ours - num(&l[key])).abs() <= 0.01, "{stem} {key}: {ours} against {}", l[key]);
+        }
+        let extremes = ["walk_max", "reference_max", "walk_min", "reference_min"];
+        for (cell, key) in cells[6..].iter().zip(extremes) {
+            let ((v, p), (cv, cp)) = (at(cell), pair(&l[key]));
+            assert!((v - cv).abs() <= 0.01 && p == cp, "{stem} {key}: {cell} against {}", l[key]);
+        }
+    }
+    // summary.json: the interface's keys first, in order, then the comparison's, the same
+    // numbers as compare's (one measuring code, the same walk).
+    let text = read(&dir, "summary.json");
+    let position = |key: &str| text.find(&format!("\"{key}\":")).unwrap_or_else(|| panic!("{key} missing"));
+    let keys: Vec<usize> = SUMMARY_KEYS.iter().map(|k| position(k)).collect();
+    assert!(keys.windows(2).all(|w| w[0] < w[1]), "the interface's keys keep their order");
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for (joint, stem) in [("hip", "hip_flex"), ("knee", "knee_flex"), ("ankle", "ankle_dorsi")] {
+        let l = lines.iter().find(|l| l["curve"] == stem).unwrap();
+        for (suffix, key) in [("rms_deg", "rms_deg"), ("r", "pearson_r")] {
+            let name = format!("normative_{joint}_{suffix}");
+            assert!(position(&name) > position("optimiser_fixed_rule_mean_cost"), "{name} is appended");
+            assert!((num(&json[&name]) - num(&l[key])).abs() < 1e-9, "{name}: {} against {}", json[&name], l[key]);
+        }
+    }
     std::fs::remove_dir_all(dir).unwrap();
 }
 

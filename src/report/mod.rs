@@ -3,6 +3,7 @@
 //! The folder is built under a temporary name beside the target and renamed into place at
 //! the end, so an interrupted run never leaves a folder that looks complete.
 
+mod against;
 pub mod metrics;
 pub mod plots;
 
@@ -83,6 +84,7 @@ pub fn write_report(
     let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)?;
     let ik_targets = &run.ik_targets;
     let summary = metrics::summarise(&run)?;
+    let normative = against::compare(&input.name, input.cycles, &run, &summary)?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
         progress(&format!("simulating {name} for comparison"));
@@ -122,13 +124,14 @@ pub fn write_report(
         plots::write_plots(&plots, &walks)?;
         plots::write_ik_plot(&plots, ik_targets, &ik_runs)?;
         progress("writing summary");
-        let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
+        let json = serde_json::to_string_pretty(&against::SummaryJson::new(&summary, &normative))
+            .map_err(|e| e.to_string())?;
         write("summary.json", &format!("{json}\n"))?;
         write("config.toml", &config_text(input)?)?;
         let compared: Vec<(&str, &Summary)> = others.iter().map(|(n, _, _, s)| (n.as_str(), s)).collect();
         let ik_summaries: Vec<(IkSolverKind, IkSummary)> =
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
-        write("summary.md", &summary_md(input, &summary, &compared, &ik_summaries))?;
+        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik_summaries))?;
         Ok(())
     })?;
     Ok(summary)
@@ -234,16 +237,18 @@ fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
     config::edit::edited_text(input.source_text, input.params, &changed)
 }
 
-/// `summary.md`: the walk's figures (beside any compared walk's), the IK solvers on its
-/// targets, and links to the plots and tables.
+/// `summary.md`: the walk's figures (beside any compared walk's), the walk against measured
+/// gait, the IK solvers on its targets, and links to the plots and tables.
 fn summary_md(
     input: &ReportInput<'_>,
     s: &Summary,
     others: &[(&str, &Summary)],
+    normative: &crate::normative::Comparison,
     ik_rows: &[(IkSolverKind, IkSummary)],
 ) -> String {
     let mut md = summary_intro(input, others);
     figures_table(&mut md, input, s, others);
+    against::section(&mut md, &input.name, !others.is_empty(), normative);
     ik_table(&mut md, input, ik_rows);
     md.push_str("\n## Plots\n\n");
     for plot in plots::PLOTS {

@@ -2,11 +2,11 @@
 //! curves over the right gait cycle, each rounded as the snapshot file stores it.
 
 use super::tolerance::Kind;
-use crate::analysis;
+use crate::analysis::{self, Run};
 use crate::error::{Error, Result};
 use crate::model::params::WalkParams;
 use crate::model::walk::frame::Frame;
-use crate::report::metrics::{self, LABELS, TooShort};
+use crate::report::metrics::{self, LABELS, Summary, TooShort};
 use std::path::Path;
 
 /// The joint curves a snapshot keeps, named as the joint table's columns.
@@ -63,12 +63,18 @@ pub fn measure(path: &Path, params: &WalkParams) -> Result<Snapshot> {
             CYCLES.end()
         )));
     }
-    let fps = params.sim.fps;
-    let run = analysis::run(params, f64::from(cycles), fps)
+    let run = analysis::run(params, f64::from(cycles), params.sim.fps)
         .map_err(|source| Error::Walk { config: path.to_path_buf(), source })?;
+    let summary = metrics::summarise(&run).map_err(|e| TooShort(format!("{}: {e}", path.display())))?;
+    recorded(path, cycles, &run, &summary)
+}
+
+/// A walk already recorded (`cycles` of the config at `path`) and summarised, measured as
+/// [`measure`] measures it: the report compares its own recording with the norms through
+/// this, so that its figures are `gaitlab compare`'s without a second walk.
+pub fn recorded(path: &Path, cycles: u32, run: &Run, summary: &Summary) -> Result<Snapshot> {
     let too_short = |e: TooShort| TooShort(format!("{}: {e}", path.display()));
-    let summary = metrics::summarise(&run).map_err(too_short)?;
-    let value = serde_json::to_value(&summary).map_err(|e| Error::Usage(e.to_string()))?;
+    let value = serde_json::to_value(summary).map_err(|e| Error::Usage(e.to_string()))?;
     let summary = LABELS
         .iter()
         .map(|(key, _, _)| {
@@ -80,7 +86,7 @@ pub fn measure(path: &Path, params: &WalkParams) -> Result<Snapshot> {
     Ok(Snapshot {
         config: path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
         cycles,
-        fps,
+        fps: run.fps,
         summary,
         curves: CURVES
             .iter()

@@ -1,13 +1,16 @@
 //! Plots over the gait cycle, mean and min–max band of the steady cycles: the pelvis and the
-//! joint angles, with compared walks overlaid.
+//! joint angles, with compared walks overlaid and measured adults' mean ± 1 SD behind them.
 
 use super::common::{FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_height_px, y_range};
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
+use crate::normative::Reference;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// One chart over % of the gait cycle: each (name, colour, cycle) as mean line and band.
+/// One chart over % of the gait cycle: each (name, colour, cycle) as mean line and band,
+/// in order, so the first is drawn behind the rest. An empty name leaves its line out of the
+/// legend (a lone walk is the report's own); a name of several lines takes a legend row each.
 fn cycle_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -18,11 +21,11 @@ fn cycle_chart<DB: DrawingBackend>(
     let all: Vec<&[(f64, f64)]> = lines.iter().flat_map(|(_, _, c)| [c.mean.as_slice(), c.band.as_slice()]).collect();
     let y = y_range(&all);
     // Room above the data for the event names and, above them, the legend, so neither covers
-    // a curve nor each other; a lone line needs no legend (the figure's title and summary.md
-    // name the walk). The plot's height is the area's less the caption, margins and x labels.
-    let legend = lines.len() > 1;
+    // a curve nor each other. The plot's height is the area's less the caption, margins and
+    // x labels.
+    let rows = lines.iter().filter(|l| !l.0.is_empty()).map(|l| l.0.lines().count()).sum::<usize>();
     let plot_px = (f64::from(area.dim_in_pixel().1) - 30.0 - 2.0 * 12.0 - 55.0).max(100.0);
-    let legend_px = if legend { legend_height_px(lines.len()) + 8.0 } else { 0.0 };
+    let legend_px = if rows > 0 { legend_height_px(rows) + 8.0 } else { 0.0 };
     let headroom_px = (legend_px + 30.0).min(0.6 * plot_px);
     let span = y.end - y.start;
     let y = y.start..y.start + span * plot_px / (plot_px - headroom_px);
@@ -48,11 +51,20 @@ fn cycle_chart<DB: DrawingBackend>(
         .map_err(err)?;
     for (name, color, c) in lines {
         chart.draw_series(std::iter::once(Polygon::new(c.band.clone(), color.mix(0.18)))).map_err(err)?;
-        chart
-            .draw_series(LineSeries::new(c.mean.clone(), color.stroke_width(3)))
-            .map_err(err)?
-            .label(*name)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
+        let line = chart.draw_series(LineSeries::new(c.mean.clone(), color.stroke_width(3))).map_err(err)?;
+        let mut rows = name.lines();
+        if let Some(first) = rows.next() {
+            line.label(first).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
+        }
+        // A name too wide for a panel's legend goes on in rows without a swatch, so that it
+        // still reads as one entry.
+        for row in rows {
+            chart
+                .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+                .map_err(err)?
+                .label(row)
+                .legend(|(x, y)| EmptyElement::at((x, y)));
+        }
     }
     for (name, pct) in events {
         chart
@@ -65,7 +77,7 @@ fn cycle_chart<DB: DrawingBackend>(
             .draw_series(std::iter::once(Text::new(name.to_string(), (*pct + 0.8, label_y), (FONT, 18))))
             .map_err(err)?;
     }
-    if legend {
+    if rows > 0 {
         chart
             .configure_series_labels()
             .label_font((FONT, LEGEND_FONT_PX))
@@ -107,20 +119,46 @@ fn pelvis_cycles(d: &Data<'_>) -> Vec<Cycle> {
     ]
 }
 
-/// The pelvis's six quantities over the right gait cycle, one panel each.
+/// The pelvis's six quantities over the right gait cycle, one panel each; the three angles
+/// over measured adults' mean +- 1 SD (the report's own walk's mean for the tilt).
 pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let root = root
-        .titled("Pelvis over the right gait cycle (mean and min-max band of the steady cycles)", (FONT, 34))
+        .titled("Pelvis over the right gait cycle (mean and min-max band; grey: measured adults)", (FONT, 34))
         .map_err(err)?;
     let areas = root.split_evenly((2, 3));
     let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
+    let reference = built_in();
+    // Signs, checked before drawing: the walk's obliquity is + with the right hip up and its
+    // rotation + with the right hip forward (`PelvisPose::new`, its test
+    // `obliquity_lifts_the_right_hip`); the reference's are the right side's pelvis angles
+    // on the right leg's cycle, + ipsilateral up / forward (normative_adult_walking.md,
+    // from the shapes: +5.5° at 16 %, +4.3° at 4 %). The default walk agrees where the
+    // events say it must (obliquity +3.5° at 16 %, rotation +4.0° at right heel strike;
+    // `gaitlab compare` r +0.72 and +0.63, where a flipped sign would be negative), so the
+    // bands are drawn as they stand. The reference's tilt carries a ~10° offset from its
+    // marker model and the walk's tilt is a swing about its posture: a shape band, moved
+    // onto the report's own walk's mean.
+    let norms = [
+        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_tilt_ant", Some(mean_of(&cycles[0][0])))),
+        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_obliq_up", None)),
+        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_rot_fwd", None)),
+    ];
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
-        let lines: Vec<(&str, RGBColor, &Cycle)> = walks
+        let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
             .iter()
             .enumerate()
-            .map(|(k, (name, _))| (name.as_str(), PALETTE[k % PALETTE.len()], &cycles[k][p]))
+            .map(|(k, (name, _))| {
+                // A lone walk is the report's own (the summary names it): the legend names
+                // only the band, and no box of walk names sits over a lone curve.
+                let name = if walks.len() == 1 { "" } else { name.as_str() };
+                (name, PALETTE[k % PALETTE.len()], &cycles[k][p])
+            })
             .collect();
+        if let Some(norm) = norms.get(p).and_then(Option::as_ref) {
+            let name = if p == 0 { NORM_TILT_NAME } else { NORM_NAME };
+            lines.insert(0, (name, NORM, norm));
+        }
         cycle_chart(area, title, unit, &lines, &walks[0].1.events)?;
     }
     root.present().map_err(err)
@@ -129,21 +167,32 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
 /// The normative band's colour: grey, behind the walks.
 const NORM: RGBColor = RGBColor(120, 120, 120);
 
-/// `reference`'s curve for `joint` ("hip", "knee", "ankle"): its mean and a mean +- 1 SD
-/// band over 0-100 % of the cycle.
-fn normative_cycle(reference: &crate::normative::Reference, joint: &str) -> Option<Cycle> {
-    let stem = match joint {
-        "hip" => "hip_flex",
-        "knee" => "knee_flex",
-        "ankle" => "ankle_dorsi",
-        _ => return None,
-    };
+/// The normative band's legend entry.
+const NORM_NAME: &str = "adults, Fukuchi 2018 (+-1 SD)";
+
+/// The pelvic tilt band's legend entry: the reference's shape, not its level.
+const NORM_TILT_NAME: &str = "adults, Fukuchi 2018 (+-1 SD)\nshape about the walk's mean";
+
+/// The built-in reference. It is part of the binary and checked by a test, so it parses.
+fn built_in() -> Option<Reference> {
+    Reference::parse(crate::normative::BUILT_IN, "built-in").ok()
+}
+
+/// The mean of a cycle's mean curve over its points.
+fn mean_of(c: &Cycle) -> f64 {
+    c.mean.iter().map(|p| p.1).sum::<f64>() / c.mean.len().max(1) as f64
+}
+
+/// `reference`'s curve `stem`: its mean and a mean +- 1 SD band over 0-100 % of the cycle;
+/// with `about` its mean over the cycle moved there (a shape band).
+fn normative_cycle(reference: &Reference, stem: &str, about: Option<f64>) -> Option<Cycle> {
     let (_, mean, sd) = reference.curves.iter().find(|(s, _, _)| s == stem)?;
+    let shift = about.map_or(0.0, |level| level - mean.iter().sum::<f64>() / mean.len() as f64);
     let pct = |i: usize| i as f64;
-    let lo = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m - s));
-    let hi: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m + s)).collect();
+    let lo = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m + shift - s));
+    let hi: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (pct(i), m + shift + s)).collect();
     Some(Cycle {
-        mean: mean.iter().enumerate().map(|(i, m)| (pct(i), *m)).collect(),
+        mean: mean.iter().enumerate().map(|(i, m)| (pct(i), m + shift)).collect(),
         band: lo.chain(hi.into_iter().rev()).collect(),
     })
 }
@@ -160,14 +209,13 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     let root = root.titled(title, (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 3));
     type Pick = fn(&LegFrame) -> f64;
-    let joints: [(&str, &str, Pick); 3] = [
-        ("hip", "flexion + (deg)", |l| l.hip_flex_deg),
-        ("knee", "flexion + (deg)", |l| l.knee_flex_deg),
-        ("ankle", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
+    let joints: [(&str, &str, &str, Pick); 3] = [
+        ("hip", "hip_flex", "flexion + (deg)", |l| l.hip_flex_deg),
+        ("knee", "knee_flex", "flexion + (deg)", |l| l.knee_flex_deg),
+        ("ankle", "ankle_dorsi", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
     ];
-    // The built-in file is part of the binary and checked by a test, so it always parses.
-    let reference = crate::normative::Reference::parse(crate::normative::BUILT_IN, "built-in").ok();
-    for (area, (name, unit, pick)) in areas.iter().zip(joints) {
+    let reference = built_in();
+    for (area, (name, stem, unit, pick)) in areas.iter().zip(joints) {
         let mut cycles = Vec::new();
         for (k, (walk, d)) in walks.iter().enumerate() {
             let f = &d.run.frames;
@@ -179,8 +227,8 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
             }
         }
         // Measured adult walking behind the walk's curves: mean and +-1 SD.
-        if let Some(norm) = reference.as_ref().and_then(|r| normative_cycle(r, name)) {
-            cycles.insert(0, ("adults, Fukuchi 2018 (+-1 SD)".to_string(), NORM, norm));
+        if let Some(norm) = reference.as_ref().and_then(|r| normative_cycle(r, stem, None)) {
+            cycles.insert(0, (NORM_NAME.to_string(), NORM, norm));
         }
         let lines: Vec<(&str, RGBColor, &Cycle)> = cycles.iter().map(|(n, c, cy)| (n.as_str(), *c, cy)).collect();
         cycle_chart(area, name, unit, &lines, &walks[0].1.events)?;

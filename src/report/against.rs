@@ -1,0 +1,110 @@
+//! The report's walk against measured gait: `summary.md`'s "Against measured gait" section
+//! and the `normative_*` keys appended to `summary.json`. Both come from the comparison
+//! `gaitlab compare` prints, run on the report's own recording (one walk, the same figures).
+
+use super::metrics::Summary;
+use crate::analysis::Run;
+use crate::normative::{self, Comparison, CurveComparison, Reference};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The report's walk (`cycles` of the config named `name`) against the built-in reference.
+pub(super) fn compare(name: &str, cycles: u32, run: &Run, summary: &Summary) -> crate::Result<Comparison> {
+    let reference = Reference::parse(normative::BUILT_IN, "built-in reference")?;
+    normative::compare_recorded(Path::new(name), cycles, run, summary, &reference)
+}
+
+/// `summary.json`: the interface's keys as they always were, then the comparison's headline
+/// figures (new keys go at the end). The snapshot files read [`super::metrics::LABELS`], not
+/// this, so they do not change.
+#[derive(Serialize)]
+pub(super) struct SummaryJson<'a> {
+    #[serde(flatten)]
+    summary: &'a Summary,
+    normative_hip_rms_deg: f64,
+    normative_knee_rms_deg: f64,
+    normative_ankle_rms_deg: f64,
+    normative_hip_r: f64,
+    normative_knee_r: f64,
+    normative_ankle_r: f64,
+}
+
+impl<'a> SummaryJson<'a> {
+    pub(super) fn new(summary: &'a Summary, c: &Comparison) -> Self {
+        let curve = |stem: &str| c.curves.iter().find(|k| k.curve == stem);
+        let rms = |stem: &str| curve(stem).map_or(f64::NAN, |k| k.rms_deg);
+        let r = |stem: &str| curve(stem).map_or(f64::NAN, |k| k.pearson_r);
+        SummaryJson {
+            summary,
+            normative_hip_rms_deg: rms("hip_flex"),
+            normative_knee_rms_deg: rms("knee_flex"),
+            normative_ankle_rms_deg: rms("ankle_dorsi"),
+            normative_hip_r: r("hip_flex"),
+            normative_knee_r: r("knee_flex"),
+            normative_ankle_r: r("ankle_dorsi"),
+        }
+    }
+}
+
+/// How the table names each compared curve.
+fn label(stem: &str) -> &str {
+    match stem {
+        "hip_flex" => "hip flexion",
+        "knee_flex" => "knee flexion",
+        "ankle_dorsi" => "ankle dorsiflexion",
+        "pelvis_tilt_ant" => "pelvic tilt, shape (means removed)",
+        "pelvis_obliq_up" => "pelvic obliquity, right up",
+        "pelvis_rot_fwd" => "pelvic rotation, right forward",
+        other => other,
+    }
+}
+
+/// The "Against measured gait" section: which walk, the reference and both speeds, then a
+/// row per curve. Figures to two decimals (r to three), so that they read back as
+/// `gaitlab compare --json` gives them.
+pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Comparison) {
+    let _ = write!(
+        md,
+        "\n## Against measured gait\n\n`{name}` at {:.3} m/s against {} at {:.3} m/s, over the mean \
+         steady right gait cycle every 2 % (as `gaitlab compare` gives it).{} Difference = walk − \
+         reference; r: Pearson r of the two mean curves (the shape, blind to offset and scale); \
+         outside ±1 / ±2 SD: share of the cycle beyond the reference's mean ± 1 / 2 SD; range of \
+         motion difference: the walk's less the reference's; extremes as value @ % of the cycle. \
+         Pelvic tilt is compared as a shape (both means removed): the measured tilt carries an \
+         offset of about 10° that depends on the marker model. The plots `joints` and `pelvis` \
+         draw the reference's band.\n\n\
+         | curve | RMS (deg) | r | outside ±1 SD (%) | outside ±2 SD (%) | range of motion difference (deg) | walk max | reference max | walk min | reference min |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        c.speed_mps,
+        normative::BUILT_IN_SOURCE,
+        c.reference_speed_mps,
+        if compared {
+            format!(" The table is for `{name}`, the report's own walk, not the compared ones.")
+        } else {
+            String::new()
+        },
+    );
+    for k in &c.curves {
+        row(md, k);
+    }
+}
+
+fn row(md: &mut String, k: &CurveComparison) {
+    let at = |(v, p): (f64, f64)| format!("{v:.2} @ {p:.0}");
+    let _ = writeln!(
+        md,
+        "| {} (`{}`) | {:.2} | {:.3} | {:.2} | {:.2} | {:+.2} | {} | {} | {} | {} |",
+        label(&k.curve),
+        k.curve,
+        k.rms_deg,
+        k.pearson_r,
+        k.outside_1sd_pct,
+        k.outside_2sd_pct,
+        k.range_difference_deg,
+        at(k.walk_max),
+        at(k.reference_max),
+        at(k.walk_min),
+        at(k.reference_min)
+    );
+}
