@@ -93,3 +93,13 @@ fn bad_options_are_refused_before_any_walking() {
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(out.stdout.is_empty(), "no table: nothing was fitted");
 }
+
+#[test]
+fn with_the_config_on_stdout_the_table_goes_to_stderr() {
+    let out = gaitlab(&["fit", "configs/stroll.toml", "--evaluations", "10", "--out", "-"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let config = String::from_utf8_lossy(&out.stdout);
+    assert!(config.starts_with("# Fitted by `gaitlab fit`"), "{config}");
+    gaitlab::config::load_text(&config, "stdout", &[]).unwrap();
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cost (mean RMS"), "the table is on stderr");
+}

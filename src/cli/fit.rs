@@ -38,12 +38,17 @@ pub(super) fn run(path: &Path, args: &Args<'_>, sets: &[String]) -> Result<()> {
     let started = std::time::Instant::now();
     let result = fit::fit(path, &params, &reference, FitOptions { evaluations, cycles })?;
     let seconds = started.elapsed().as_secs_f64();
+    // With the config on stdout (`--out -`), the table goes to stderr: one stream, one file.
+    let config_on_stdout = matches!(target, Some(FileTarget::Stdout));
     if let Some(target) = target {
         let fitted = fitted_config(&text, &params, &result, &source, reference.speed_mps)?;
         output::write_file(&target, |out: &mut dyn Write| out.write_all(fitted.as_bytes()))?;
     }
-    let stdout = io::stdout();
-    let mut out = io::BufWriter::new(stdout.lock());
+    let mut out: Box<dyn Write> = if config_on_stdout {
+        Box::new(io::stderr().lock())
+    } else {
+        Box::new(io::BufWriter::new(io::stdout().lock()))
+    };
     let written = if args.json {
         write_json(&mut out, &result, seconds)
     } else {
