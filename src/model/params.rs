@@ -355,7 +355,7 @@ impl Default for WalkParams {
                 rest_tilt_deg: 10.0,
             },
             legs: LegParams {
-                foot_flat: 0.12,
+                foot_flat: 0.06,
                 heel_rise: 0.31,
                 toe_off: None,
                 turnout_deg: 7.0,
