@@ -475,6 +475,9 @@ fn check_and_the_lab_agree_on_key_bindings() {
         ("[keys]\nquit = \"ctrl+\"\n", false),
         ("[keys]\nquit = 5\n", false),
         ("keys = 3\n", false),
+        ("[keys]\ntoggle_norms = [\"N\", \"ctrl+n\"]\n", true),
+        ("[keys]\ntoggle_norms = \"shift+\"\n", false),
+        ("[keys]\ntoggle_norm = \"N\"\n", false),
     ];
     for (i, (text, valid)) in cases.iter().enumerate() {
         let path = dir.join(format!("k{i}.toml"));
@@ -485,6 +488,11 @@ fn check_and_the_lab_agree_on_key_bindings() {
         assert_eq!(lab.is_ok(), *valid, "{text}");
         if let Err(e) = lab {
             assert_eq!(text_of(&o.stderr).trim_end(), e.to_string(), "{text}: the same message");
+            if text.contains("toggle_norm") {
+                let named =
+                    if text.contains("toggle_norms") { "keys.toggle_norms" } else { "did you mean `toggle_norms`" };
+                assert!(e.to_string().contains(named), "{text}: {e}");
+            }
         }
     }
 }

@@ -14,6 +14,7 @@ use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::frame::Frame;
 use crate::model::walk::{ModelError, Walker};
+use crate::normative::{self, Reference};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::collections::VecDeque;
 use std::path::PathBuf;
@@ -87,8 +88,9 @@ pub struct App {
     /// The latest frame of the walk.
     pub frame: Frame,
     pub(super) frame_count: u64,
-    /// Joint angles of recent frames: time (s), then hip, knee, ankle right, then left (deg).
-    pub(crate) traces: VecDeque<(f64, [f64; 6])>,
+    /// Joint angles of recent frames: time (s), then hip, knee, ankle right, then left (deg),
+    /// then the right leg's cycle phase (0 at its heel strike), which places the norms band.
+    pub(crate) traces: VecDeque<(f64, [f64; 6], f64)>,
     /// Paused.
     pub paused: bool,
     pub(super) speed_index: usize,
@@ -98,6 +100,11 @@ pub struct App {
     pub curve: usize,
     /// Several curves at once.
     pub(crate) grid: bool,
+    /// The measured adults' mean ± 1 SD behind the joint traces.
+    pub norms: bool,
+    /// The built-in normative reference, parsed once for every frame that draws its band
+    /// (`None` only if the file bundled in the binary were broken: no band then).
+    pub(crate) reference: Option<Reference>,
     /// Panel beside the walk on narrow screens.
     pub panel: Panel,
     /// The selected parameter (index into [`PARAMS`]).
@@ -151,6 +158,8 @@ impl App {
             view: View::Side,
             curve: 0,
             grid: false,
+            norms: false,
+            reference: Reference::parse(normative::BUILT_IN, "built-in reference").ok(),
             panel: Panel::Editor,
             selected: PARAMS.iter().position(|p| p.key == "walk.speed_mps").unwrap_or(0),
             overlay: None,
@@ -239,6 +248,7 @@ impl App {
         self.traces.push_back((
             self.frame.time_s,
             [r.hip_flex_deg, r.knee_flex_deg, r.ankle_dorsi_deg, l.hip_flex_deg, l.knee_flex_deg, l.ankle_dorsi_deg],
+            r.phase,
         ));
     }
 
@@ -364,6 +374,7 @@ impl App {
             Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
             Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
             Action::ToggleGrid => self.toggle_grid(),
+            Action::ToggleNorms => self.toggle_norms(),
             Action::NextPanel => {
                 let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
                 self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
@@ -394,6 +405,16 @@ impl App {
             self.panel = Panel::Curves;
         }
         self.message = Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
+    }
+
+    /// The norms band on or off; on narrow screens the joint traces share a tab with the
+    /// other panels, so turning it on switches to them (else the key would look dead).
+    fn toggle_norms(&mut self) {
+        self.norms = !self.norms;
+        if self.norms {
+            self.panel = Panel::Joints;
+        }
+        self.message = Some(if self.norms { "adult norms band on" } else { "adult norms band off" }.into());
     }
 
     /// Opens the preset list, or the terrain kinds with the current one highlighted.

@@ -63,6 +63,8 @@ pub enum Action {
     PrevCurve,
     /// One curve or a grid of them.
     ToggleGrid,
+    /// The measured adults' mean ± 1 SD behind the joint traces, or not.
+    ToggleNorms,
     /// Next panel (narrow screens).
     NextPanel,
     /// Re-run the optimiser on the last step.
@@ -114,6 +116,7 @@ pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("c", Action::NextCurve),
     ("C", Action::PrevCurve),
     ("g", Action::ToggleGrid),
+    ("n", Action::ToggleNorms),
     ("tab", Action::NextPanel),
     ("o", Action::RerunOptimiser),
     ("m", Action::NextMethod),
@@ -140,7 +143,8 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::Terrain], "pick the terrain kind"),
     (&[Action::ToggleView], "side / frontal view"),
     (&[Action::NextCurve, Action::PrevCurve], "next / previous curve"),
-    (&[Action::ToggleGrid], "one curve / grid of curves"),
+    // One line for both keeps the whole help on an 80x24 screen without scrolling.
+    (&[Action::ToggleGrid, Action::ToggleNorms], "curve grid / adult norms band on the joints"),
     (&[Action::NextPanel], "next panel (small screens)"),
     (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
     (&[Action::NextSolver], "next leg IK solver (the walk switches live)"),
@@ -308,6 +312,12 @@ impl KeyMap {
         if keys.is_empty() { "(unbound)".into() } else { keys.join(" ") }
     }
 
+    /// The first key bound to `action`, as the help shows it (`None`: unbound), for hints.
+    #[must_use]
+    pub fn first_key_of(&self, action: Action) -> Option<String> {
+        self.bindings.iter().find(|(_, a)| *a == action).map(|(k, _)| k.label())
+    }
+
     /// The help's key column for one line.
     #[must_use]
     pub fn help_keys(&self, actions: &[Action]) -> String {
@@ -324,7 +334,7 @@ mod tests {
         // The README's `[keys]` action list: the names users' configs are written in.
         let documented = "quit help pause step slower faster restart up down group_up group_down decrease increase \
             decrease_coarse increase_coarse edit reset undo redo save save_as presets terrain toggle_view next_curve \
-            prev_curve toggle_grid next_panel rerun_optimiser next_method next_ik_solver export";
+            prev_curve toggle_grid toggle_norms next_panel rerun_optimiser next_method next_ik_solver export";
         let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
         assert_eq!(names, documented.split_whitespace().collect::<Vec<_>>());
         for a in Action::ALL {

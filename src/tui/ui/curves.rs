@@ -5,6 +5,7 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::walk::leg::LegPhase;
 use crate::tui::app::{App, CurveView};
+use crate::tui::keys::Action;
 use crate::tui::ui::walk::{LEFT, RIGHT};
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
@@ -211,15 +212,64 @@ pub fn draw_curves(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     }
 }
 
-/// Hip, knee and ankle angles of both legs over the last cycles.
+/// The norms band's colour: a background, so the walk's lines keep their own colours over
+/// it, and a dark grey, so they stay the brightest thing in the panel.
+pub const NORMS_BAND: Color = Color::Indexed(237);
+
+/// The built-in reference as the joint panel's legend names it.
+pub const NORMS_SOURCE: &str = "Fukuchi 2018 ±1 SD";
+
+/// The reference's curves of the traced joints, in the traces' order.
+const NORMS_STEMS: [&str; 3] = ["hip_flex", "knee_flex", "ankle_dorsi"];
+
+/// The joint panel's bottom line: the legs' colours, then the band's swatch and source when
+/// it is shown, else the key that shows it (as `[keys]` binds it). The legs shrink to their
+/// initials where the source would not fit beside their names (a 60-column screen).
+fn joints_legend(app: &App, band: bool, width: u16) -> Line<'static> {
+    let legend = |right: &'static str, left: &'static str| {
+        let mut spans = vec![
+            Span::raw(" "),
+            Span::styled(right, Style::new().fg(RIGHT)),
+            Span::raw(" "),
+            Span::styled(left, Style::new().fg(LEFT)),
+        ];
+        if band {
+            spans.push(Span::styled("  ", Style::new().bg(NORMS_BAND)));
+            spans.push(Span::raw(format!(" {NORMS_SOURCE} ")));
+        } else if let Some(key) = app.keymap.first_key_of(Action::ToggleNorms) {
+            spans.push(Span::styled(format!("{key}: norms "), Style::new().fg(Color::DarkGray)));
+        }
+        Line::from(spans)
+    };
+    let full = legend("right", "left ");
+    if full.width() <= usize::from(width) { full } else { legend("R", "L ") }
+}
+
+/// The reference's mean and SD at `phase` (0..1) of the cycle, linear between its rows
+/// (one a percent, 0 and 100 % both heel strike).
+fn at_phase(mean: &[f64], sd: &[f64], phase: f64) -> (f64, f64) {
+    let last = mean.len() - 1;
+    let x = phase.clamp(0.0, 1.0) * last as f64;
+    let i = (x.floor() as usize).min(last - 1);
+    let s = x - i as f64;
+    (mean[i] + (mean[i + 1] - mean[i]) * s, sd[i] + (sd[i + 1] - sd[i]) * s)
+}
+
+/// What the band is, said beside the hip trace's name as fully as the row allows: the
+/// reference walked at one speed only, so the band cannot follow the walk's speed.
+fn band_note(speed_mps: f64, room: usize) -> Option<String> {
+    [format!("band: right leg; at {speed_mps} m/s, not speed-matched"), format!("right leg, {speed_mps} m/s only")]
+        .into_iter()
+        .find(|n| n.chars().count() <= room)
+}
+
+/// Hip, knee and ankle angles of both legs over the last cycles; with the norms on, the
+/// measured adults' mean ± 1 SD behind them, following the right leg's cycle.
 pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
-    let legend = Line::from(vec![
-        Span::raw(" "),
-        Span::styled("right", Style::new().fg(RIGHT)),
-        Span::raw(" "),
-        Span::styled("left ", Style::new().fg(LEFT)),
-    ]);
-    let inner = super::panel(f, area, Line::raw(" Joint angles (deg) over time (s) "), Some(legend));
+    let reference = app.reference.as_ref().filter(|_| app.norms);
+    let title = Line::raw(" Joint angles (deg) over time (s) ");
+    let legend = joints_legend(app, reference.is_some(), area.width.saturating_sub(2));
+    let inner = super::panel(f, area, title, Some(legend));
     if app.traces.len() < 2 || inner.height < 3 {
         f.render_widget(Paragraph::new("collecting…"), inner);
         return;
@@ -229,34 +279,59 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let rows = Layout::vertical([Constraint::Fill(1); 3]).split(inner);
     // One point a cell column (lines join them): more would only cost drawing time.
     let stride = (app.traces.len() / usize::from(inner.width).max(1)).max(1);
+    let samples: Vec<_> = app.traces.iter().step_by(stride).collect();
     for (j, name) in ["hip flexion", "knee flexion", "ankle dorsiflexion"].iter().enumerate() {
-        let right: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j])).collect();
-        let left: Vec<(f64, f64)> = app.traces.iter().step_by(stride).map(|(t, a)| (*t, a[j + 3])).collect();
-        let y = bounds(right.iter().chain(left.iter()).map(|p| p.1));
-        draw_trace(f, rows[j], name, [t0, t1], y, [(&right, RIGHT), (&left, LEFT)], marker);
+        let right: Vec<(f64, f64)> = samples.iter().map(|(t, a, _)| (*t, a[j])).collect();
+        let left: Vec<(f64, f64)> = samples.iter().map(|(t, a, _)| (*t, a[j + 3])).collect();
+        // Each sample carries the right leg's phase, 0 at its heel strike as is the
+        // reference's 0 %: read there, the band follows the right leg's trace (the left
+        // leg's runs half a cycle out of it).
+        let band: Vec<(f64, f64, f64)> = reference
+            .and_then(|r| r.curves.iter().find(|c| c.0 == NORMS_STEMS[j]))
+            .map_or_else(Vec::new, |(_, mean, sd)| {
+                samples
+                    .iter()
+                    .map(|(t, _, phase)| {
+                        let (m, s) = at_phase(mean, sd, *phase);
+                        (*t, m - s, m + s)
+                    })
+                    .collect()
+            });
+        let y = bounds(right.iter().chain(left.iter()).map(|p| p.1).chain(band.iter().flat_map(|b| [b.1, b.2])));
+        let room = usize::from(inner.width).saturating_sub(name.chars().count() + 2);
+        let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, room));
+        let trace = Trace { name, note, lines: [(&right, RIGHT), (&left, LEFT)], band: &band };
+        draw_trace(f, rows[j], &trace, [t0, t1], y, marker);
     }
+}
+
+/// One joint's trace: its name, a note right of it, both legs' lines, and the norms band as
+/// (time, low, high) — empty when not shown.
+struct Trace<'a> {
+    name: &'a str,
+    note: Option<String>,
+    lines: [(&'a [(f64, f64)], Color); 2],
+    band: &'a [(f64, f64, f64)],
 }
 
 /// A small line chart: the name on its first row, the y range at the left, both legs' lines
 /// on one canvas. A `Chart` would paint each line on its own canvas layer over the whole
 /// area; one layer halves the joint panel's drawing time (where the lines cross, the later
 /// one's colour shows, as with layers).
-fn draw_trace(
-    f: &mut Frame,
-    area: Rect,
-    name: &str,
-    x: [f64; 2],
-    y: [f64; 2],
-    lines: [(&[(f64, f64)], Color); 2],
-    marker: Marker,
-) {
+fn draw_trace(f: &mut Frame, area: Rect, trace: &Trace<'_>, x: [f64; 2], y: [f64; 2], marker: Marker) {
     if area.height < 2 || area.width < 8 {
         return;
     }
     let (hi, lo) = (label(y[1]).content.into_owned(), label(y[0]).content.into_owned());
     let gutter = hi.len().max(lo.len()) as u16 + 1;
     let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
-    f.render_widget(Paragraph::new(Line::styled(name.to_string(), Style::new().fg(Color::Gray))), title);
+    let mut heading = vec![Span::styled(trace.name.to_string(), Style::new().fg(Color::Gray))];
+    if let Some(note) = &trace.note {
+        let pad = usize::from(title.width).saturating_sub(trace.name.chars().count() + note.chars().count());
+        heading.push(Span::raw(" ".repeat(pad)));
+        heading.push(Span::styled(note.clone(), Style::new().fg(Color::DarkGray)));
+    }
+    f.render_widget(Paragraph::new(Line::from(heading)), title);
     let [labels, canvas] = Layout::horizontal([Constraint::Length(gutter), Constraint::Fill(1)]).areas(plot);
     let mut label_lines = vec![Line::raw(String::new()); usize::from(labels.height)];
     if let Some(first) = label_lines.first_mut() {
@@ -270,6 +345,7 @@ fn draw_trace(
         label_lines[last] = Line::raw(format!("{lo:>w$}│", w = usize::from(gutter - 1)));
     }
     f.render_widget(Paragraph::new(label_lines), labels);
+    let lines = trace.lines;
     let widget = Canvas::default().marker(marker).x_bounds(x).y_bounds(y).paint(move |ctx| {
         for (points, colour) in lines {
             for pair in points.windows(2) {
@@ -278,4 +354,74 @@ fn draw_trace(
         }
     });
     f.render_widget(widget, canvas);
+    let canvas = canvas.intersection(f.area());
+    paint_band(f.buffer_mut(), canvas, x, y, trace.band);
+}
+
+/// The band in the canvas's cells after the lines are drawn, each cell column taking the
+/// band at its middle time. A cell a line is drawn in gets the band as its background when
+/// the band covers half of it or more; an empty cell gets it by half rows (`▀`, `▄`, or the
+/// background), which doubles the band's resolution where no line hides it. A band thinner
+/// than that still marks the half row of its middle. Backgrounds a half-block line already
+/// uses are kept.
+fn paint_band(buf: &mut Buffer, canvas: Rect, x: [f64; 2], y: [f64; 2], band: &[(f64, f64, f64)]) {
+    if band.is_empty() || canvas.is_empty() || y[1] <= y[0] {
+        return;
+    }
+    let row_of = |v: f64| (y[1] - v) / (y[1] - y[0]) * f64::from(canvas.height);
+    for col in 0..canvas.width {
+        let t = x[0] + (x[1] - x[0]) * (f64::from(col) + 0.5) / f64::from(canvas.width);
+        let i = band.partition_point(|b| b.0 < t).min(band.len() - 1);
+        let i = if i > 0 && t - band[i - 1].0 < band[i].0 - t { i - 1 } else { i };
+        let (top, bottom) = (row_of(band[i].2), row_of(band[i].1));
+        let covered = |from: f64, to: f64| (bottom.min(to) - top.max(from)).max(0.0) / (to - from) >= 0.5;
+        // Half rows in the band, in rows from the top; a thin band's middle half row.
+        let mut halves: Vec<u16> =
+            (0..2 * canvas.height).filter(|h| covered(0.5 * f64::from(*h), 0.5 * f64::from(*h + 1))).collect();
+        if halves.is_empty() {
+            let middle = (top + bottom).clamp(0.0, f64::from(2 * canvas.height - 1));
+            halves.push(middle as u16);
+        }
+        for r in 0..canvas.height {
+            let (up, down) = (halves.contains(&(2 * r)), halves.contains(&(2 * r + 1)));
+            let cell = &mut buf[(canvas.x + col, canvas.y + r)];
+            if cell.symbol() == " " {
+                match (up, down) {
+                    (true, true) => cell.set_bg(NORMS_BAND),
+                    (true, false) => cell.set_char('▀').set_fg(NORMS_BAND),
+                    (false, true) => cell.set_char('▄').set_fg(NORMS_BAND),
+                    (false, false) => cell,
+                };
+            } else if (up || down) && cell.bg == Color::Reset {
+                let whole = covered(f64::from(r), f64::from(r + 1));
+                if whole || (halves.len() == 1) {
+                    cell.set_bg(NORMS_BAND);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::normative::{BUILT_IN, Reference};
+
+    #[test]
+    fn the_band_reads_the_reference_at_the_phase_in_percent_of_the_cycle() {
+        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
+        let (_, mean, sd) = r.curves.iter().find(|c| c.0 == "knee_flex").unwrap();
+        assert_eq!(at_phase(mean, sd, 0.74), (mean[74], sd[74]));
+        assert_eq!(at_phase(mean, sd, 0.0), (mean[0], sd[0]));
+        assert_eq!(at_phase(mean, sd, 1.0), (mean[100], sd[100]));
+        let (m, s) = at_phase(mean, sd, 0.745);
+        assert!((m - 0.5 * (mean[74] + mean[75])).abs() < 1e-9 && (s - 0.5 * (sd[74] + sd[75])).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_band_note_names_the_speed_as_fully_as_the_room_allows() {
+        assert_eq!(band_note(1.245, 60).unwrap(), "band: right leg; at 1.245 m/s, not speed-matched");
+        assert_eq!(band_note(1.245, 25).unwrap(), "right leg, 1.245 m/s only");
+        assert_eq!(band_note(1.245, 24), None);
+    }
 }
