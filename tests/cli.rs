@@ -376,6 +376,68 @@ fn ik_prints_a_table_per_solver_and_json_lines_and_names_bad_solvers() {
     assert!(text(&out.stderr).contains("ik.solver"), "{}", text(&out.stderr));
 }
 
+/// Seed 002's tables (issue 15, point 2) after the side-by-side lines, and in the JSON after
+/// every field scripts already read.
+#[test]
+fn ik_adds_seed_002s_tables_per_side_with_a_starved_solver_failing() {
+    let args =
+        ["ik", &config_path("default"), "--cycles", "1", "--solvers", "analytic,ccd", "--set", "ik.tolerance_mm=10"];
+    let out = gaitlab(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let table = text(&out.stdout);
+    let side_by_side = table.find("solver            reached").expect("the side-by-side table");
+    let verdicts = table.find("Seed 002's thresholds").expect("the verdict table");
+    assert!(side_by_side < table.find("Seed 002 tables 5.1-5.2").unwrap(), "{table}");
+    assert!(table.find("Seed 002 table 5.3").unwrap() < verdicts, "{table}");
+    // solver, side, angle error, jitter, position error mean (value and verdict each), overall.
+    let rows: Vec<Vec<&str>> = table[verdicts..].lines().skip(2).map(|l| l.split_whitespace().collect()).collect();
+    // Indented, so that a script's `^ccd ` still finds only the side-by-side line.
+    assert_eq!(table.lines().filter(|l| l.starts_with("ccd ")).count(), 1, "{table}");
+    assert_eq!(rows.len(), 4, "{table}");
+    for (row, (solver, side)) in
+        rows.iter().zip([("analytic", "right"), ("analytic", "left"), ("ccd", "right"), ("ccd", "left")])
+    {
+        assert_eq!((row[0], row[1], row.len()), (solver, side, 9), "{table}");
+        let mean_mm: f64 = row[6].parse().unwrap();
+        if solver == "analytic" {
+            assert_eq!((row[2], row[4], row[6]), ("0.000", "0.0000", "0.0000"), "{table}");
+            assert_eq!([row[3], row[5], row[7], row[8]], ["pass"; 4], "{table}");
+        } else {
+            // A 10 mm tolerance lets CCD stop as soon as it is within it: > 5 mm on average.
+            assert!(mean_mm > 5.0 && mean_mm <= 10.0, "{table}");
+            assert_eq!((row[7], row[8]), ("fail", "fail"), "{table}");
+        }
+    }
+
+    let json_args = [&args[..], &["--json"]].concat();
+    let out = gaitlab(&json_args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    for line in stdout.lines() {
+        // The old fields first, in their old order; the new one last.
+        assert!(line.starts_with("{\"ankle_jump_max_frame\":"), "{line}");
+        let time = line.find("\"time_per_solve_us\":").unwrap();
+        assert!(line[time..].contains(",\"seed002\":{\"right\":{\"solves\":"), "{line}");
+    }
+    let lines: Vec<serde_json::Value> = stdout.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let (analytic, ccd) = (&lines[0]["seed002"], &lines[1]["seed002"]);
+    for side in ["right", "left"] {
+        let a = &analytic[side];
+        for axis in ["hip_flexion", "hip_abduction", "hip_rotation", "knee_flexion"] {
+            assert_eq!(a["angle_error_max_deg"][axis].as_f64(), Some(0.0), "{a}");
+            assert_eq!(a["angle_error_mean_deg"][axis].as_f64(), Some(0.0), "{a}");
+        }
+        assert_eq!((a["knee_jitter_max_mm"].as_f64(), a["ankle_jitter_max_mm"].as_f64()), (Some(0.0), Some(0.0)));
+        assert!(a["ankle_jump_max_mm"].as_f64().unwrap() > 10.0, "{a}");
+        assert_eq!(a["pass"], true, "{a}");
+        let c = &ccd[side];
+        assert!(c["position_error_mean_mm"].as_f64().unwrap() > 5.0, "{c}");
+        assert_eq!((c["position_pass"].as_bool(), c["pass"].as_bool()), (Some(false), Some(false)), "{c}");
+    }
+    let solves = |v: &serde_json::Value| v["right"]["solves"].as_u64().unwrap() + v["left"]["solves"].as_u64().unwrap();
+    assert_eq!(Some(solves(ccd)), lines[1]["solves"].as_u64());
+}
+
 /// Run lengths at the extremes are refused with the valid range, before any work.
 #[test]
 fn run_lengths_at_the_extremes_are_refused_with_the_range() {

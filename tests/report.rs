@@ -275,6 +275,11 @@ fn a_comparison_report_names_both_walks_in_legends_and_columns() {
     let json: serde_json::Value = serde_json::from_str(&read(&dir, "summary.json")).unwrap();
     assert!((json["speed_mps"].as_f64().unwrap() - 1.3).abs() < 0.01);
     assert!(md.contains("The table is for `default`, the report's own walk"), "{md}");
+    // Seed 002's IK tables too: once, on the report's own walk's targets.
+    assert_eq!(md.matches("**Seed 002's thresholds").count(), 1, "{md}");
+    assert!(
+        md.contains("in seed 002's form, on `default`'s targets") && md.contains("| analytic | left | 0.000 pass |")
+    );
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -369,6 +374,7 @@ fn ik_solvers_are_measured_side_by_side_in_the_report() {
     }
     let md = read(&dir, "summary.md");
     assert!(md.contains("| jacobian_dls | ") && md.contains("| fabrik | "), "{md}");
+    seed_002s_tables_match_ik_csv(&md, &rows);
     let svg = read(&dir, "plots/ik.svg");
     assert!(svg.contains("jacobian_dls") && svg.contains("fabrik") && svg.contains("error (mm)"));
 
@@ -377,6 +383,38 @@ fn ik_solvers_are_measured_side_by_side_in_the_report() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("unknown solver `newton`") && err.contains("jacobian_dls"), "{err}");
+}
+
+/// Seed 002's tables in the IK section (issue 15, point 2): a row per solver and leg, whose
+/// mean position error is the one of that solver's and leg's rows of ik.csv, judged against
+/// 5 mm, every verdict a pass for these solvers at their 0.1 mm tolerance.
+fn seed_002s_tables_match_ik_csv(md: &str, csv: &[Vec<&str>]) {
+    let section = &md[md.find("## Leg IK").unwrap()..md.find("## Plots").unwrap()];
+    for title in ["**Seed 002 tables 5.1-5.2", "**Seed 002 table 5.3", "**Seed 002's thresholds"] {
+        assert!(section.contains(title), "{title} missing:\n{section}");
+    }
+    let verdicts = &section[section.find("**Seed 002's thresholds").unwrap()..];
+    assert!(
+        verdicts
+            .contains("| solver | side | angle error max (deg) | jitter max (mm/frame) | error mean (mm) | overall |")
+    );
+    let rows: Vec<Vec<&str>> = verdicts
+        .lines()
+        .filter(|l| l.starts_with("| jacobian_dls |") || l.starts_with("| fabrik |"))
+        .map(|l| l.trim_matches('|').split('|').map(str::trim).collect())
+        .collect();
+    assert_eq!(rows.len(), 4, "{verdicts}");
+    for row in rows {
+        let (solver, side) = (row[0], row[1]);
+        let errors: Vec<f64> =
+            csv.iter().filter(|r| r[3] == solver && r[2] == side).map(|r| r[4].parse().unwrap()).collect();
+        let mean = errors.iter().sum::<f64>() / errors.len() as f64;
+        let (shown, verdict) = row[4].split_once(' ').unwrap();
+        assert!((shown.parse::<f64>().unwrap() - mean).abs() < 1e-4, "{row:?}: ik.csv says {mean}");
+        assert_eq!(verdict, "pass", "{row:?}");
+        let angle: f64 = row[2].split_once(' ').unwrap().0.parse().unwrap();
+        assert!(angle > 0.0 && angle < 5.0 && row[2].ends_with("pass") && row[5] == "pass", "{row:?}");
+    }
 }
 
 /// The least `--cycles` a report takes measures every shipped config (at 3, the third heel

@@ -15,7 +15,15 @@
 //! - **joint-limit violations**: solves whose angles leave the `[ik]` ranges by > 0.01°;
 //! - **inter-frame jump**: distance the knee and the ankle move between consecutive frames of
 //!   the same leg (mm), max (with the frame) and mean — the analytic row is the walk's own
-//!   motion, so a solver's excess over it is its jitter.
+//!   motion, so a solver's excess over it is its jitter;
+//! - **angle error** (per sample): each leg angle's difference from the analytic answer's
+//!   (deg); hip rotation only where the knee direction error is defined, as a straight knee
+//!   leaves the hip's axial turn to whatever the previous frame had;
+//! - **jitter** (per sample): how far the knee's and the ankle's offset from the analytic
+//!   answer changes since this leg's previous frame (mm) — the part of the jump the solver
+//!   adds to the walk's own motion.
+//!
+//! Per side, with seed 002's thresholds applied: [`crate::analysis::ik_tables`].
 
 pub use crate::analysis::recording::IkTarget;
 use crate::analysis::recording::{Keep, record};
@@ -72,6 +80,14 @@ pub struct IkSample {
     pub knee_jump_mm: f64,
     /// See `knee_jump_mm`.
     pub ankle_jump_mm: f64,
+    /// Difference from the analytic answer's angles (deg), in [`LegAngles::to_array`] order;
+    /// hip rotation `None` where `knee_direction_error_deg` is.
+    pub angle_error_deg: [Option<f64>; 4],
+    /// Change of the knee's offset from the analytic knee since this leg's previous frame
+    /// (mm); 0 on its first.
+    pub knee_jitter_mm: f64,
+    /// See `knee_jitter_mm`, for the ankle.
+    pub ankle_jitter_mm: f64,
     /// Wall-clock time of the solve (µs).
     pub time_us: f64,
 }
@@ -152,7 +168,8 @@ pub fn run_solver_from(
     analytic_settings.twist = 0.0;
     let mut legs = Side::BOTH.map(|side| LegSolver::new(settings, thigh, shank, side.sign()));
     let mut references = Side::BOTH.map(|side| LegSolver::new(analytic_settings, thigh, shank, side.sign()));
-    let mut previous: [Option<IkAnswer>; 2] = [None, None];
+    // Each leg's previous answer and the analytic one beside it: jumps and jitter.
+    let mut previous: [Option<(IkAnswer, IkAnswer)>; 2] = [None, None];
     let mut samples = Vec::with_capacity(targets.len());
     for t in targets {
         let i = t.side.index();
@@ -163,15 +180,30 @@ pub fn run_solver_from(
         let answer = legs[i].solve(&t.question);
         let time_us = started.elapsed().as_secs_f64() * 1e6;
         let reference = references[i].solve(&t.question);
-        let (knee_jump_mm, ankle_jump_mm) = previous[i]
-            .map_or((0.0, 0.0), |p| (p.knee.distance(answer.knee) * 1e3, p.ankle.distance(answer.ankle) * 1e3));
-        previous[i] = Some(answer);
+        let ((knee_jump_mm, ankle_jump_mm), (knee_jitter_mm, ankle_jitter_mm)) =
+            previous[i].map_or(((0.0, 0.0), (0.0, 0.0)), |(p, r)| {
+                let jitter = |now: DVec3, was: DVec3, ref_now: DVec3, ref_was: DVec3| {
+                    ((now - ref_now) - (was - ref_was)).length() * 1e3
+                };
+                (
+                    (p.knee.distance(answer.knee) * 1e3, p.ankle.distance(answer.ankle) * 1e3),
+                    (
+                        jitter(answer.knee, p.knee, reference.knee, r.knee),
+                        jitter(answer.ankle, p.ankle, reference.ankle, r.ankle),
+                    ),
+                )
+            });
+        previous[i] = Some((answer, reference));
+        let knee_direction_error_deg = knee_direction_error_deg(t.question.hip, &answer, &reference);
         samples.push(IkSample {
             answer,
-            knee_direction_error_deg: knee_direction_error_deg(t.question.hip, &answer, &reference),
+            knee_direction_error_deg,
             limit_excess_deg: settings.limits.violation(answer.angles).to_degrees(),
             knee_jump_mm,
             ankle_jump_mm,
+            angle_error_deg: angle_error_deg(answer.angles, reference.angles, knee_direction_error_deg.is_some()),
+            knee_jitter_mm,
+            ankle_jitter_mm,
             time_us,
         });
     }
@@ -191,6 +223,18 @@ fn knee_direction_error_deg(hip: glam::DVec3, answer: &IkAnswer, reference: &IkA
         return None;
     }
     Some(a.angle_between(b).to_degrees())
+}
+
+/// Each angle's distance from the reference's (deg), taken the short way round: a solver's
+/// own parametrisation may sit a full turn from the shared one. Hip rotation is `None` unless
+/// `rotation_defined`.
+fn angle_error_deg(answer: LegAngles, reference: LegAngles, rotation_defined: bool) -> [Option<f64>; 4] {
+    let (a, r) = (answer.to_array(), reference.to_array());
+    let [flex, abd, rot, knee] = std::array::from_fn(|k| {
+        let d = (a[k] - r[k]).rem_euclid(std::f64::consts::TAU);
+        Some(d.min(std::f64::consts::TAU - d).to_degrees())
+    });
+    [flex, abd, rot.filter(|_| rotation_defined), knee]
 }
 
 impl SolverRun {

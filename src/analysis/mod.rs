@@ -12,6 +12,7 @@
 
 pub mod events;
 pub mod ik;
+pub mod ik_tables;
 pub mod recording;
 
 pub use recording::{IkTarget, Keep, Recording, record};

@@ -2,10 +2,12 @@
 
 use super::common::{in_range, stdout_written};
 use crate::analysis::ik::{IkSummary, IkTarget, collect_targets, random_targets, run_solver_from};
+use crate::analysis::ik_tables::{MaxMean, SideTable, SolverSides, TextTable, seed_tables, side_tables};
 use crate::config;
 use crate::error::{Error, Result};
+use crate::model::body::Side;
 use crate::model::ik::{IkSettings, IkSolverKind};
-use serde_json::json;
+use serde::Serialize;
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 
@@ -88,19 +90,24 @@ pub(super) fn run(
     };
     // The gradient solver takes seconds over a long walk: say what is running, on a terminal.
     let tty = io::stderr().is_terminal();
-    let rows: Vec<(IkSolverKind, IkSummary)> = solvers
+    let (rows, sides): (Vec<(IkSolverKind, IkSummary)>, Vec<SolverSides>) = solvers
         .iter()
         .map(|&solver| {
             if tty {
                 eprintln!("gaitlab ik: {} on {} targets", solver.name(), targets.len());
             }
             let run = run_solver_from(&targets, solver, &r.ik, (r.dims.thigh, r.dims.shank), cold);
-            (solver, run.summary(&targets))
+            ((solver, run.summary(&targets)), (solver, side_tables(&run, &targets)))
         })
-        .collect();
+        .unzip();
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
-    let written = if json { write_json(&mut out, &rows) } else { write_tables(&mut out, path, &header, &r.ik, &rows) };
+    let written = if json {
+        write_json(&mut out, &rows, &sides)
+    } else {
+        write_tables(&mut out, path, &header, &r.ik, &rows)
+            .and_then(|()| seed_tables(&sides).iter().try_for_each(|t| write_text_table(&mut out, t)))
+    };
     stdout_written(written.and_then(|()| out.flush()))
 }
 
@@ -195,28 +202,148 @@ fn write_tables(
     Ok(())
 }
 
-fn write_json(out: &mut impl Write, rows: &[(IkSolverKind, IkSummary)]) -> io::Result<()> {
-    for (solver, s) in rows {
-        let line = json!({
-            "solver": solver.name(),
-            "solves": s.solves,
-            "reached": s.reached,
-            "position_error_max_mm": s.position_error_max_mm,
-            "position_error_mean_mm": s.position_error_mean_mm,
-            "knee_direction_error_max_deg": s.knee_direction_error_max_deg,
-            "knee_direction_error_mean_deg": s.knee_direction_error_mean_deg,
-            "iterations_mean": s.iterations_mean,
-            "iterations_max": s.iterations_max,
-            "time_per_solve_us": s.time_per_solve_us,
-            "limit_violations": s.limit_violations,
-            "knee_jump_max_mm": s.knee_jump_max_mm,
-            "knee_jump_max_frame": s.knee_jump_max_frame,
-            "knee_jump_mean_mm": s.knee_jump_mean_mm,
-            "ankle_jump_max_mm": s.ankle_jump_max_mm,
-            "ankle_jump_max_frame": s.ankle_jump_max_frame,
-            "ankle_jump_mean_mm": s.ankle_jump_mean_mm,
-        });
-        writeln!(out, "{line}")?;
+/// A table with its title, a blank line before it, its columns padded to their widest cell
+/// (names to the left, figures to the right). Header and rows are indented: scripts pick the
+/// side-by-side lines by the solver name at the start of a line.
+fn write_text_table(out: &mut impl Write, table: &TextTable) -> io::Result<()> {
+    let widths: Vec<usize> = (0..table.head.len())
+        .map(|c| std::iter::once(&table.head).chain(&table.rows).map(|row| row[c].chars().count()).max().unwrap_or(0))
+        .collect();
+    let line = |row: &[String]| -> String {
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&widths)
+            .enumerate()
+            .map(|(c, (cell, &w))| if c < 2 { format!("{cell:<w$}") } else { format!("{cell:>w$}") })
+            .collect();
+        format!("  {}", cells.join("  ").trim_end())
+    };
+    writeln!(out)?;
+    writeln!(out, "{}", table.title)?;
+    writeln!(out, "{}", line(&table.head))?;
+    for row in &table.rows {
+        writeln!(out, "{}", line(row))?;
+    }
+    Ok(())
+}
+
+/// One `--json` line. The fields up to `time_per_solve_us` are in the alphabetical order the
+/// line has always had (a `json!` map's), which scripts read; later fields go at the end.
+#[derive(Serialize)]
+struct JsonLine<'a> {
+    ankle_jump_max_frame: u64,
+    ankle_jump_max_mm: f64,
+    ankle_jump_mean_mm: f64,
+    iterations_max: u32,
+    iterations_mean: f64,
+    knee_direction_error_max_deg: f64,
+    knee_direction_error_mean_deg: f64,
+    knee_jump_max_frame: u64,
+    knee_jump_max_mm: f64,
+    knee_jump_mean_mm: f64,
+    limit_violations: usize,
+    position_error_max_mm: f64,
+    position_error_mean_mm: f64,
+    reached: usize,
+    solver: &'a str,
+    solves: usize,
+    time_per_solve_us: f64,
+    /// Seed 002's tables per leg (`src/analysis/ik_tables.rs`); a leg without targets is left out.
+    seed002: SidesJson,
+}
+
+#[derive(Serialize)]
+struct SidesJson {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    right: Option<SideJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    left: Option<SideJson>,
+}
+
+#[derive(Serialize)]
+struct AxesJson {
+    hip_flexion: f64,
+    hip_abduction: f64,
+    hip_rotation: f64,
+    knee_flexion: f64,
+}
+
+impl AxesJson {
+    fn new(axes: [MaxMean; 4], pick: fn(MaxMean) -> f64) -> Self {
+        let [hip_flexion, hip_abduction, hip_rotation, knee_flexion] = axes.map(pick);
+        AxesJson { hip_flexion, hip_abduction, hip_rotation, knee_flexion }
+    }
+}
+
+#[derive(Serialize)]
+struct SideJson {
+    solves: usize,
+    position_error_max_mm: f64,
+    position_error_mean_mm: f64,
+    angle_error_max_deg: AxesJson,
+    angle_error_mean_deg: AxesJson,
+    knee_jump_max_mm: f64,
+    knee_jump_mean_mm: f64,
+    ankle_jump_max_mm: f64,
+    ankle_jump_mean_mm: f64,
+    knee_jitter_max_mm: f64,
+    knee_jitter_mean_mm: f64,
+    ankle_jitter_max_mm: f64,
+    ankle_jitter_mean_mm: f64,
+    angle_pass: bool,
+    jump_pass: bool,
+    position_pass: bool,
+    pass: bool,
+}
+
+impl SideJson {
+    fn new(s: &SideTable) -> Self {
+        SideJson {
+            solves: s.solves,
+            position_error_max_mm: s.position_error_mm.max,
+            position_error_mean_mm: s.position_error_mm.mean,
+            angle_error_max_deg: AxesJson::new(s.angle_error_deg, |a| a.max),
+            angle_error_mean_deg: AxesJson::new(s.angle_error_deg, |a| a.mean),
+            knee_jump_max_mm: s.knee_jump_mm.max,
+            knee_jump_mean_mm: s.knee_jump_mm.mean,
+            ankle_jump_max_mm: s.ankle_jump_mm.max,
+            ankle_jump_mean_mm: s.ankle_jump_mm.mean,
+            knee_jitter_max_mm: s.knee_jitter_mm.max,
+            knee_jitter_mean_mm: s.knee_jitter_mm.mean,
+            ankle_jitter_max_mm: s.ankle_jitter_mm.max,
+            ankle_jitter_mean_mm: s.ankle_jitter_mm.mean,
+            angle_pass: s.angle_pass(),
+            jump_pass: s.jump_pass(),
+            position_pass: s.position_pass(),
+            pass: s.pass(),
+        }
+    }
+}
+
+fn write_json(out: &mut impl Write, rows: &[(IkSolverKind, IkSummary)], sides: &[SolverSides]) -> io::Result<()> {
+    for ((solver, s), (_, tables)) in rows.iter().zip(sides) {
+        let side = |which: Side| tables.iter().find(|t| t.side == which).map(SideJson::new);
+        let line = JsonLine {
+            ankle_jump_max_frame: s.ankle_jump_max_frame,
+            ankle_jump_max_mm: s.ankle_jump_max_mm,
+            ankle_jump_mean_mm: s.ankle_jump_mean_mm,
+            iterations_max: s.iterations_max,
+            iterations_mean: s.iterations_mean,
+            knee_direction_error_max_deg: s.knee_direction_error_max_deg,
+            knee_direction_error_mean_deg: s.knee_direction_error_mean_deg,
+            knee_jump_max_frame: s.knee_jump_max_frame,
+            knee_jump_max_mm: s.knee_jump_max_mm,
+            knee_jump_mean_mm: s.knee_jump_mean_mm,
+            limit_violations: s.limit_violations,
+            position_error_max_mm: s.position_error_max_mm,
+            position_error_mean_mm: s.position_error_mean_mm,
+            reached: s.reached,
+            solver: solver.name(),
+            solves: s.solves,
+            time_per_solve_us: s.time_per_solve_us,
+            seed002: SidesJson { right: side(Side::Right), left: side(Side::Left) },
+        };
+        writeln!(out, "{}", serde_json::to_string(&line).map_err(io::Error::other)?)?;
     }
     Ok(())
 }

@@ -8,6 +8,7 @@ pub mod metrics;
 pub mod plots;
 
 use crate::analysis::ik::{self, IkSummary, IkTarget, SolverRun};
+use crate::analysis::ik_tables::{SolverSides, TextTable, seed_tables, side_tables};
 use crate::analysis::{self, Keep, Recording, Run};
 use crate::config::{self, render::toml_number, schema::PARAMS};
 use crate::model::body::Side;
@@ -131,7 +132,9 @@ pub fn write_report(
         let compared: Vec<(&str, &Summary)> = others.iter().map(|(n, _, _, s)| (n.as_str(), s)).collect();
         let ik_summaries: Vec<(IkSolverKind, IkSummary)> =
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
-        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik_summaries))?;
+        let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
+        let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
+        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik))?;
         Ok(())
     })?;
     Ok(summary)
@@ -244,12 +247,13 @@ fn summary_md(
     s: &Summary,
     others: &[(&str, &Summary)],
     normative: &crate::normative::Comparison,
-    ik_rows: &[(IkSolverKind, IkSummary)],
+    ik: &IkRows<'_>,
 ) -> String {
     let mut md = summary_intro(input, others);
     figures_table(&mut md, input, s, others);
     against::section(&mut md, &input.name, !others.is_empty(), normative);
-    ik_table(&mut md, input, ik_rows);
+    ik_table(&mut md, input, ik.summaries);
+    seed_ik_tables(&mut md, input, ik.sides);
     md.push_str("\n## Plots\n\n");
     for plot in plots::PLOTS {
         let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
@@ -341,6 +345,37 @@ fn ik_table(md: &mut String, input: &ReportInput<'_>, ik_rows: &[(IkSolverKind, 
             r.iterations_max,
             r.limit_violations
         );
+    }
+}
+
+/// The IK solvers' figures on the report's walk: overall, and per leg in seed 002's form.
+struct IkRows<'a> {
+    summaries: &'a [(IkSolverKind, IkSummary)],
+    sides: &'a [SolverSides],
+}
+
+/// Seed 002's tables 5.1–5.3 for the report's own walk (the IK section measures no compared
+/// walk), as `gaitlab ik` prints them.
+fn seed_ik_tables(md: &mut String, input: &ReportInput<'_>, sides: &[SolverSides]) {
+    let _ = write!(
+        md,
+        "\nPer leg, in seed 002's form, on `{}`'s targets (definitions and thresholds in \
+         `src/analysis/ik_tables.rs`):\n",
+        input.name
+    );
+    for table in seed_tables(sides) {
+        markdown_table(md, &table);
+    }
+}
+
+/// A table under its title in bold, names left-aligned and figures right-aligned.
+fn markdown_table(md: &mut String, table: &TextTable) {
+    let _ = writeln!(md, "\n**{}**\n", table.title);
+    let _ = writeln!(md, "| {} |", table.head.join(" | "));
+    let align: Vec<&str> = (0..table.head.len()).map(|c| if c < 2 { "---" } else { "---:" }).collect();
+    let _ = writeln!(md, "|{}|", align.join("|"));
+    for row in &table.rows {
+        let _ = writeln!(md, "| {} |", row.join(" | "));
     }
 }
 
