@@ -70,7 +70,9 @@ fn default_walk_measures_like_a_normal_adult_walk() {
     // Ranges from normal adult data (Perry & Burnfield; Winter) with the model's tolerance.
     for side in 0..2 {
         assert!((55.0..=75.0).contains(&c.knee_max_swing_deg[side]), "knee swing {:?}", c.knee_max_swing_deg);
-        assert!(c.knee_max_stance_deg[side] < 40.0, "knee stance {:?}", c.knee_max_stance_deg);
+        // The stance maximum is the knee at toe-off (it flexes again from heel rise): Fukuchi
+        // 2018's adults 36.1 ± 5.0° at 62 %, so within 2 SD.
+        assert!((26.1..=46.1).contains(&c.knee_max_stance_deg[side]), "knee stance {:?}", c.knee_max_stance_deg);
         // Clinical hip angles, against the anatomical pelvis (10° rest tilt): Fukuchi 2018's
         // adults extend to −8.1 ± 6.7° at 54 % and flex to 32.3 ± 6.6° at 90 % (2 SD here).
         let (ext, flex) = c.hip_flex_deg[side];

@@ -32,7 +32,8 @@ pub enum CurveName {
     SwingForward,
     /// Weight 0→1→0 pulling the swing heel from the step-width line to the hip line.
     SwingLateral,
-    /// Foot pitch vs horizontal (deg, toe up +) over the swing, for 15° plantarflexion at toe-off.
+    /// The ankle against the shank over the swing (deg, dorsiflexion +); each step moves its
+    /// start to the ankle's toe-off angle.
     SwingAnkle,
     /// Heel height above the toe-off ground (m) over the swing, for a heel 0.20 m up at toe-off.
     SwingHeelHeight,

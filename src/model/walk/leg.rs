@@ -83,7 +83,8 @@ pub struct SwingPlan {
     pub forward: Curve,
     /// Weight toward the hip line.
     pub lateral: Curve,
-    /// Foot pitch vs horizontal (deg), scaled to the toe-off angle and corrected uphill.
+    /// The ankle against the shank (deg, dorsiflexion +): the design curve with its start moved
+    /// to the toe-off ankle angle, its end turned up for an uphill landing.
     pub ankle_deg: Curve,
     /// Heel height above `ground_from` (m): scaled, end-shifted and raised where needed.
     pub(crate) heel_height: Curve,
@@ -149,7 +150,7 @@ pub struct LegState {
     pub(crate) anchor: DVec3,
     /// Foot–ground angle at heel strike (rad), rolled to zero through loading response.
     pub(crate) strike_angle: f64,
-    /// Heel-rise curve scale frozen at the phase's start: (stride / 1.8 m)².
+    /// Heel-rise curve scale frozen at the phase's start: stride / 1.8 m.
     pub(crate) heel_rise_scale: f64,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
