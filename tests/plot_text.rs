@@ -1,6 +1,6 @@
 //! The report's plots read back from their SVGs as text boxes: no text written over other
-//! text or a tick label, every axis's tick labels distinct, the stick figure at 1:1, in every
-//! SVG of a one-walk report and of a `--compare` report.
+//! text or a tick label, every axis's tick labels distinct, the stick figure at 1:1 (in both
+//! its views), in every SVG of a one-walk report and of a `--compare` report.
 //!
 //! A text box is estimated from the SVG's `<text>`: its anchor point, font size, the anchors
 //! plotters writes (`text-anchor`, and `dy` for the vertical one) and any `rotate(270, ..)`.
@@ -164,23 +164,30 @@ fn repeated_ticks(boxes: &[TextBox]) -> Vec<String> {
     found
 }
 
-/// Pixels per unit of the stick figure's x and y axes, from the first and last tick label of
-/// each (the x labels along the bottom, the y labels down the left).
-fn stick_figure_scales(boxes: &[TextBox]) -> (f64, f64) {
-    let axes = tick_axes(boxes);
-    let scale = |horizontal: bool| {
-        let axis = boxes
-            .iter()
-            .filter(|b| b.text.parse::<f64>().is_ok() && (b.anchor == "middle") == horizontal)
-            .map(|b| (if horizontal { b.at.0 } else { b.at.1 }, b.text.parse::<f64>().unwrap()))
-            .collect::<Vec<_>>();
-        let (lo, hi) = axis.iter().fold((axis[0], axis[0]), |(lo, hi), p| {
-            (if p.1 < lo.1 { *p } else { lo }, if p.1 > hi.1 { *p } else { hi })
-        });
-        ((hi.0 - lo.0) / (hi.1 - lo.1)).abs()
-    };
-    assert_eq!(axes.len(), 2, "the stick figure has one x and one y axis: {axes:?}");
-    (scale(true), scale(false))
+/// Pixels per unit of the stick figure's x and y axes in each of its views (the side view
+/// in the top half, the frontal view in the bottom half), from the first and last tick
+/// label of each (the x labels along the bottom, the y labels down the left).
+fn stick_figure_scales(boxes: &[TextBox]) -> Vec<(f64, f64)> {
+    [true, false]
+        .into_iter()
+        .map(|upper| {
+            let half: Vec<TextBox> = boxes.iter().filter(|b| (b.at.1 < 500.0) == upper).cloned().collect();
+            let axes = tick_axes(&half);
+            assert_eq!(axes.len(), 2, "each view of the stick figure has one x and one y axis: {axes:?}");
+            let scale = |horizontal: bool| {
+                let axis = half
+                    .iter()
+                    .filter(|b| b.text.parse::<f64>().is_ok() && (b.anchor == "middle") == horizontal)
+                    .map(|b| (if horizontal { b.at.0 } else { b.at.1 }, b.text.parse::<f64>().unwrap()))
+                    .collect::<Vec<_>>();
+                let (lo, hi) = axis.iter().fold((axis[0], axis[0]), |(lo, hi), p| {
+                    (if p.1 < lo.1 { *p } else { lo }, if p.1 > hi.1 { *p } else { hi })
+                });
+                ((hi.0 - lo.0) / (hi.1 - lo.1)).abs()
+            };
+            (scale(true), scale(false))
+        })
+        .collect()
 }
 
 fn report(dir: &Path, extra: &[&str]) -> Vec<(String, String)> {
@@ -223,9 +230,10 @@ fn no_text_overlaps_other_text_and_every_axis_reads_distinct_ticks() {
             let found = collisions(&boxes, (size("width"), size("height")));
             problems.extend(found.into_iter().chain(repeated_ticks(&boxes)).map(|p| format!("{name} {file}: {p}")));
             if file == "stick_figure.svg" {
-                let (sx, sy) = stick_figure_scales(&boxes);
-                if (sx / sy - 1.0).abs() >= 0.03 {
-                    problems.push(format!("{name} {file}: x {sx:.1} px/m, y {sy:.1} px/m"));
+                for (sx, sy) in stick_figure_scales(&boxes) {
+                    if (sx / sy - 1.0).abs() >= 0.03 {
+                        problems.push(format!("{name} {file}: x {sx:.1} px/m, y {sy:.1} px/m"));
+                    }
                 }
             }
         }

@@ -31,18 +31,25 @@ fn the_stick_figure_is_drawn_at_one_metre_per_metre_and_steps_are_whole_numbers(
     let dir = std::env::temp_dir().join(format!("gaitlab-plots-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     report(&dir);
-    // Stick figure: pixels per metre from the x tick labels (bottom) and the y tick labels
-    // (left), equal within 3 %.
+    // Stick figure: in each view (side above, frontal below), pixels per metre from the x
+    // tick labels (under the chart) and the y tick labels (left), equal within 3 %.
     let svg = std::fs::read_to_string(dir.join("plots/stick_figure.svg")).unwrap();
     let labels = numeric_labels(&svg);
-    let mut x_ticks: Vec<(f64, f64)> =
-        labels.iter().filter(|l| l.1 > 900.0 && l.0 > 100.0).map(|l| (l.0, l.2)).collect();
-    let mut y_ticks: Vec<(f64, f64)> = labels.iter().filter(|l| l.0 < 100.0).map(|l| (l.1, l.2)).collect();
-    x_ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
-    y_ticks.sort_by(|a, b| b.0.total_cmp(&a.0));
-    let per_m = |t: &[(f64, f64)]| ((t[t.len() - 1].0 - t[0].0) / (t[t.len() - 1].1 - t[0].1)).abs();
-    let (sx, sy) = (per_m(&x_ticks), per_m(&y_ticks));
-    assert!((sx / sy - 1.0).abs() < 0.03, "x {sx:.1} px/m, y {sy:.1} px/m");
+    for (top, bottom) in [(0.0, 500.0), (500.0, 1000.0)] {
+        // The x tick labels sit in the panel's bottom 60 px, under the plotting area; the y
+        // tick labels left of it, above them (the first x label is left of x 100 too).
+        let in_panel = |l: &&(f64, f64, f64, String)| l.1 >= top && l.1 < bottom;
+        let x_row = |l: &&(f64, f64, f64, String)| l.1 > bottom - 60.0;
+        let mut x_ticks: Vec<(f64, f64)> = labels.iter().filter(in_panel).filter(x_row).map(|l| (l.0, l.2)).collect();
+        let mut y_ticks: Vec<(f64, f64)> =
+            labels.iter().filter(in_panel).filter(|l| !x_row(l) && l.0 < 100.0).map(|l| (l.1, l.2)).collect();
+        x_ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
+        y_ticks.sort_by(|a, b| b.0.total_cmp(&a.0));
+        assert!(x_ticks.len() >= 2 && y_ticks.len() >= 2, "panel from y {top}: {x_ticks:?} {y_ticks:?}");
+        let per_m = |t: &[(f64, f64)]| ((t[t.len() - 1].0 - t[0].0) / (t[t.len() - 1].1 - t[0].1)).abs();
+        let (sx, sy) = (per_m(&x_ticks), per_m(&y_ticks));
+        assert!((sx / sy - 1.0).abs() < 0.03, "panel from y {top}: x {sx:.1} px/m, y {sy:.1} px/m");
+    }
     // Optimisation: the step axes read 0, 2, 4 …, every label distinct.
     let svg = std::fs::read_to_string(dir.join("plots/optimisation.svg")).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
@@ -161,5 +168,119 @@ fn the_pelvis_plot_draws_measured_adult_gait_behind_the_angles() {
         "the source named in each band's legend"
     );
     assert_eq!(texts.iter().filter(|t| t.contains("about the walk's mean")).count(), 1, "the tilt band is a shape");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A pixel box: left, top, right, bottom.
+type PxBox = (f64, f64, f64, f64);
+/// A text and its anchor (px).
+type Label = (String, f64, f64);
+
+/// The points of a `<polyline>`, or the extremes of a `<circle>`.
+fn shape_points(n: &roxmltree::Node<'_, '_>) -> Vec<(f64, f64)> {
+    let num = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+    if n.has_tag_name("circle") {
+        let (x, y, r) = (num("cx"), num("cy"), num("r"));
+        return vec![(x - r, y - r), (x + r, y + r)];
+    }
+    n.attribute("points")
+        .unwrap()
+        .split_whitespace()
+        .map(|p| p.split_once(',').map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap())).unwrap())
+        .collect()
+}
+
+fn bounds(points: &[(f64, f64)]) -> PxBox {
+    points.iter().fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, p| {
+        (b.0.min(p.0), b.1.min(p.1), b.2.max(p.0), b.3.max(p.1))
+    })
+}
+
+/// One panel of the stick-figure SVG (rows `top..bottom`): each figure's box, inferred by
+/// slot (a stick figure is connected, so its shapes' x extents chain into one interval:
+/// figures apart give one interval each, overlapping figures merge), the ground pieces'
+/// boxes, and the labels (text, x, y).
+fn stick_panel(svg: &str, top: f64, bottom: f64) -> (Vec<PxBox>, Vec<PxBox>, Vec<Label>) {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let in_panel = |b: &PxBox| b.1 >= top && b.3 < bottom;
+    let body = ["#141414", "#C82828", "#1E50C8"];
+    let mut shapes: Vec<PxBox> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") || n.has_tag_name("circle"))
+        .filter(|n| n.attribute("stroke").is_some_and(|s| body.contains(&s)))
+        .map(|n| bounds(&shape_points(&n)))
+        .filter(in_panel)
+        .collect();
+    shapes.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut figures: Vec<PxBox> = Vec::new();
+    for s in shapes {
+        match figures.last_mut() {
+            Some(f) if s.0 <= f.2 => *f = (f.0.min(s.0), f.1.min(s.1), f.2.max(s.2), f.3.max(s.3)),
+            _ => figures.push(s),
+        }
+    }
+    let grounds: Vec<PxBox> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#3C8C3C"))
+        .map(|n| bounds(&shape_points(&n)))
+        .filter(in_panel)
+        .collect();
+    let labels = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| {
+            let (x, y) = (n.attribute("x")?.parse().ok()?, n.attribute("y")?.parse::<f64>().ok()?);
+            let text = n.text()?.trim().to_string();
+            (y >= top && y < bottom).then_some((text, x, y))
+        })
+        .collect();
+    (figures, grounds, labels)
+}
+
+/// The stick figure is a chronophotograph: in the side view and the frontal view, figures
+/// side by side with no two boxes overlapping, a ground line under each (the stairs' steps
+/// on a climb), the % of the cycle under each, and each gait event named once per view.
+#[test]
+fn the_stick_figures_stand_apart_each_on_its_ground_with_its_events() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-chrono-{}", std::process::id()));
+    for config in ["configs/default.toml", "configs/stairs_up.toml"] {
+        let _ = std::fs::remove_dir_all(&dir);
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+            .args(["report", config, "--out", dir.to_str().unwrap()])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let svg = std::fs::read_to_string(dir.join("plots/stick_figure.svg")).unwrap();
+        for (view, top, bottom) in [("side", 0.0, 500.0), ("frontal", 500.0, 1000.0)] {
+            let at = format!("{config} {view}");
+            let (figures, grounds, labels) = stick_panel(&svg, top, bottom);
+            let pcts: Vec<&Label> = labels.iter().filter(|l| l.0.ends_with(" %")).collect();
+            assert_eq!(figures.len(), 8, "{at}: 8 figures apart, found {} groups: {figures:?}", figures.len());
+            assert_eq!(pcts.len(), figures.len(), "{at}: a % label per figure");
+            for pair in figures.windows(2) {
+                assert!(pair[0].2 + 4.0 < pair[1].0, "{at}: figures closer than 4 px: {pair:?}");
+            }
+            for (k, f) in figures.iter().enumerate() {
+                let under: Vec<&PxBox> = grounds.iter().filter(|g| g.0 < f.2 && g.2 > f.0).collect();
+                assert_eq!(under.len(), 1, "{at}: figure {k} {f:?} has one ground line under it: {under:?}");
+                let g = under[0];
+                assert!(g.0 <= f.0 && g.2 >= f.2, "{at}: figure {k}'s ground {g:?} spans it {f:?}");
+                // Pixels grow downwards: the ground reaches the figure's lowest point (its
+                // standing foot) and no lower than a step under it.
+                assert!((g.3 - f.3).abs() < 40.0 && g.3 >= f.3 - 3.0, "{at}: figure {k} {f:?} on its ground {g:?}");
+                let pct = pcts.iter().filter(|l| l.1 > f.0 && l.1 < f.2 && l.2 >= g.3).count();
+                assert_eq!(pct, 1, "{at}: figure {k}'s % label under it");
+            }
+            assert_eq!(pcts[0].0, "0 %", "{at}: the cycle starts at its heel strike");
+            for event in ["RHS", "LTO", "LHS", "RTO"] {
+                let named: Vec<_> = labels.iter().filter(|l| l.0 == event).collect();
+                assert_eq!(named.len(), 1, "{at}: {event} named once: {named:?}");
+                let (x, y) = (named[0].1, named[0].2);
+                let f = figures.iter().find(|f| x > f.0 && x < f.2);
+                assert!(f.is_some_and(|f| y > f.3), "{at}: {event} under a figure");
+            }
+        }
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -6,9 +6,11 @@
 //! lines mark the gait events (mean over the cycles): right toe-off (RTO), left heel strike
 //! (LHS), left toe-off (LTO).
 //!
-//! Each plot is drawn in its own file under `plots/`; `common` holds what they share and
-//! `data` the run prepared once for all of them.
+//! Each plot is drawn in its own file under `plots/`; `common` holds what they share,
+//! `data` the run prepared once for all of them, and `chrono` the stick figure's layout
+//! (which instants, which slot each figure takes).
 
+mod chrono;
 mod common;
 mod cycle;
 mod data;

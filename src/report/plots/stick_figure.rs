@@ -1,149 +1,136 @@
-//! The side view: the body as a stick figure at intervals over one steady gait cycle, on the
-//! terrain, with the heel and toe paths of both feet.
+//! The stick figure as a chronophotograph: one steady gait cycle at evenly spaced
+//! instants, each figure in its own slot on the ground under it, with the % of the cycle
+//! and the gait events beneath; the side view above, the frontal view below, both at the
+//! same metres per pixel on either axis so that the figures keep their proportions.
 
+use super::chrono::{self, FIGURES, Figure, HEAD_M, Part, Row, View};
 use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, err};
 use super::data::Data;
-use crate::model::body::{Bone, Pose, Side};
-use crate::model::terrain::Terrain;
-use crate::model::walk::frame::{Frame, LegFrame};
-use glam::DVec3;
+use crate::model::body::Side;
 use plotters::coord::Shift;
-use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// A chart in metres on both axes.
-type MetreChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+/// Chart margin, y label area and x label area (px): fixed, so that the plotting area's
+/// size is known before the chart is built and both axes can be given one scale.
+const MARGIN: u32 = 12;
+const Y_LABELS: u32 = 70;
+const X_LABELS: u32 = 50;
+/// Room (px) above the highest head.
+const TOP_PX: f64 = 12.0;
+/// Label text size (px) and the line spacing of the labels under a figure.
+const LABEL_FONT: u32 = 18;
+const LINE_PX: f64 = 22.0;
+/// The ground's colour.
+const GROUND: RGBColor = RGBColor(60, 140, 60);
 
-/// The side view over the middle steady cycle (on stairs or a slope, on the climb rather
-/// than before it).
+/// Both views over the middle steady cycle (on stairs or a slope, on the climb rather than
+/// before it).
 pub(super) fn stick_figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let frames = &d.run.frames;
-    let mid = d.strikes[0].len().saturating_sub(2) / 2;
-    let Some(&start) = d.strikes[0].get(mid) else { return root.present().map_err(err) };
-    let end = d.strikes[0].get(mid + 1).copied().unwrap_or(frames.len() - 1).min(frames.len() - 1);
-    // The recorded full-body poses of the window (the frames hold the legs only).
-    let step = ((end - start) / 16).max(1);
-    let poses: Vec<(usize, &Pose)> = (start.max(1)..=end)
-        .filter(|i| (i - start) % step == 0)
-        .filter_map(|i| d.run.poses.get(i).map(|p| (i, p)))
-        .collect();
-    let (x0, x1, y0, y1) = view(&frames[start..=end]);
-    let mut chart = ChartBuilder::on(&root)
-        .caption("Side view over one gait cycle, with heel and toe paths", (FONT, 34))
-        .margin(15)
-        .x_label_area_size(55)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc("forward x (m)")
-        .y_desc("height y (m)")
-        .label_style((FONT, 20))
-        .axis_desc_style((FONT, 22))
-        .draw()
-        .map_err(err)?;
-    draw_terrain(&mut chart, &d.run.terrain, x0, x1)?;
-    draw_foot_paths(&mut chart, &frames[start..=end])?;
-    for (i, pose) in &poses {
-        chart.draw_series(figure(pose, &frames[*i].legs)).map_err(err)?;
-        let head = pose.pos(Bone::Head);
-        chart
-            .draw_series(std::iter::once(Circle::new((head.x, head.y + 0.1), 8, DESIGN.stroke_width(2))))
-            .map_err(err)?;
+    let Some(instants) = chrono::instants(d) else { return root.present().map_err(err) };
+    let (top, bottom) = root.split_vertically(SIZE.1 / 2);
+    let captions = [
+        format!("Side view: one gait cycle in {FIGURES} figures (right limbs red, left blue)"),
+        "Frontal view, seen from in front (the right side on the page's left)".to_string(),
+    ];
+    let panels =
+        [top.titled(&captions[0], (FONT, 26)).map_err(err)?, bottom.titled(&captions[1], (FONT, 26)).map_err(err)?];
+    let views = [View::Side, View::Front];
+    let mut rows = views.map(|v| chrono::row(d, &instants, v));
+    let lines = 1 + instants.iter().map(|i| i.events.len()).max().unwrap_or(0);
+    let label_px = 8.0 + LINE_PX * lines as f64;
+    // One scale for both views, the largest at which each row fits its panel across and up.
+    let scale = rows
+        .iter()
+        .zip(&panels)
+        .map(|(row, panel)| {
+            let (w, h) = plot_px(panel);
+            (w / row.width).min((h - label_px - TOP_PX) / (row.high - row.low))
+        })
+        .fold(f64::INFINITY, f64::min);
+    for ((row, panel), view) in rows.iter_mut().zip(&panels).zip(views) {
+        let (w, h) = plot_px(panel);
+        // The row centred across its panel, the panel's x starting at 0.
+        row.shift(0.5 * (w / scale - row.width));
+        let y0 = row.low - label_px / scale;
+        draw_row(panel, row, view, &instants, (0.0..w / scale, y0..y0 + h / scale), scale)?;
     }
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 20))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(err)?;
     root.present().map_err(err)
 }
 
-/// The view's x and y ranges (m) around the cycle's `frames`: the pelvis's travel with room
-/// for the legs ahead and behind, from just under the lowest ground to above the head, at
-/// equal metres per pixel on both axes so the figure is not distorted.
-fn view(frames: &[Frame]) -> (f64, f64, f64, f64) {
-    let x0 = frames[0].pelvis.x - 0.6;
-    let x1 = frames[frames.len() - 1].pelvis.x + 0.6;
-    let ground = frames.iter().flat_map(|f| f.legs.iter().map(|l| l.ground_under_heel)).fold(f64::INFINITY, f64::min);
-    let top = frames.iter().map(|f| f.pelvis.y).fold(f64::NEG_INFINITY, f64::max) + 1.0;
-    // The plotting area in pixels: the image less the margins, the y labels, the x labels
-    // and the caption (measured from the SVG: 1500 x 875).
-    let (w, h) = (f64::from(SIZE.0 - 2 * 15 - 70), f64::from(SIZE.1 - 2 * 15 - 55 - 40));
-    let y0 = ground - 0.1;
-    let y1 = (y0 + (x1 - x0) * h / w).max(top);
-    // A tall walk (stairs, the head) widens the view rather than stretching the metres of
-    // one axis: the figure keeps its proportions.
-    let width = (y1 - y0) * w / h;
-    let middle = 0.5 * (x0 + x1);
-    (middle - 0.5 * width, middle + 0.5 * width, y0, y1)
+/// The plotting area (px) a chart on `panel` gets: the panel less the margins and the
+/// label areas.
+fn plot_px<DB: DrawingBackend>(panel: &DrawingArea<DB, Shift>) -> (f64, f64) {
+    let (w, h) = panel.dim_in_pixel();
+    (f64::from(w - 2 * MARGIN - Y_LABELS), f64::from(h - 2 * MARGIN - X_LABELS))
 }
 
-/// The terrain's profile from `x0` to `x1`, sampled finely enough to show stair nosings.
-fn draw_terrain<DB: DrawingBackend>(chart: &mut MetreChart<'_, DB>, terrain: &Terrain, x0: f64, x1: f64) -> Res {
+/// One view's chart: axes, then per figure its ground, body, head and labels.
+fn draw_row<DB: DrawingBackend>(
+    panel: &DrawingArea<DB, Shift>,
+    row: &Row,
+    view: View,
+    instants: &[chrono::Instant],
+    (x, y): (std::ops::Range<f64>, std::ops::Range<f64>),
+    scale: f64,
+) -> Res {
+    let mut chart = ChartBuilder::on(panel)
+        .margin(MARGIN)
+        .x_label_area_size(X_LABELS)
+        .y_label_area_size(Y_LABELS)
+        .build_cartesian_2d(x, y)
+        .map_err(err)?;
+    let across = match view {
+        View::Side => "forward x (m), each figure moved into its own slot",
+        View::Front => "lateral -z (m), each figure moved into its own slot",
+    };
     chart
-        .draw_series(std::iter::once(PathElement::new(
-            (0..=400)
-                .map(|k| {
-                    let x = x0 + (x1 - x0) * f64::from(k) / 400.0;
-                    (x, terrain.height(x))
-                })
-                .collect::<Vec<_>>(),
-            RGBColor(60, 140, 60).stroke_width(3),
-        )))
-        .map_err(err)?
-        .label("terrain")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RGBColor(60, 140, 60).stroke_width(3)));
-    Ok(())
-}
-
-/// Each foot's heel path (strong) and toe path (faint) through `frames`.
-fn draw_foot_paths<DB: DrawingBackend>(chart: &mut MetreChart<'_, DB>, frames: &[Frame]) -> Res {
-    for (side, color, name) in [(0usize, RIGHT, "right heel / toe path"), (1, LEFT, "left heel / toe path")] {
-        for (k, pick) in [|l: &LegFrame| l.heel, |l: &LegFrame| l.toe].iter().enumerate() {
-            let s = chart
-                .draw_series(LineSeries::new(
-                    frames.iter().map(|f| {
-                        let p = pick(&f.legs[side]);
-                        (p.x, p.y)
-                    }),
-                    color.mix(if k == 0 { 0.9 } else { 0.5 }).stroke_width(2),
-                ))
-                .map_err(err)?;
-            if k == 0 {
-                s.label(name).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2)));
-            }
-        }
+        .configure_mesh()
+        .disable_x_mesh()
+        .x_desc(across)
+        .y_desc("height y (m)")
+        .label_style((FONT, 18))
+        .axis_desc_style((FONT, 20))
+        .draw()
+        .map_err(err)?;
+    for (f, i) in row.figures.iter().zip(instants) {
+        chart.draw_series(std::iter::once(PathElement::new(f.ground.clone(), GROUND.stroke_width(3)))).map_err(err)?;
+        chart.draw_series(body(f)).map_err(err)?;
+        let radius = (HEAD_M * scale).round() as i32;
+        chart.draw_series(std::iter::once(Circle::new(f.head, radius, DESIGN.stroke_width(2)))).map_err(err)?;
+        chart.draw_series(labels(f, i, scale)).map_err(err)?;
     }
     Ok(())
 }
 
-/// The stick figure of one frame: the trunk from the pelvis to the head, then per side the
-/// leg from the frame's joints (as the joint table has them) and the arm from the pose.
-fn figure(pose: &Pose, legs: &[LegFrame; 2]) -> Vec<PathElement<(f64, f64)>> {
-    let seg = |a: DVec3, b: DVec3, c: RGBAColor| PathElement::new(vec![(a.x, a.y), (b.x, b.y)], c.stroke_width(2));
-    let mut elements = vec![
-        seg(pose.pos(Bone::Pelvis), pose.pos(Bone::Spine), DESIGN.mix(1.0)),
-        seg(pose.pos(Bone::Spine), pose.pos(Bone::Chest), DESIGN.mix(1.0)),
-        seg(pose.pos(Bone::Chest), pose.pos(Bone::Neck), DESIGN.mix(1.0)),
-        seg(pose.pos(Bone::Neck), pose.pos(Bone::Head), DESIGN.mix(1.0)),
-    ];
-    for side in Side::BOTH {
-        let c = if side == Side::Right { RIGHT } else { LEFT };
-        let l = &legs[side.index()];
-        elements.push(seg(l.hip, l.knee, c.mix(1.0)));
-        elements.push(seg(l.knee, l.ankle, c.mix(1.0)));
-        elements.push(seg(l.ankle, l.heel, c.mix(1.0)));
-        elements.push(seg(l.heel, pose.pos(Bone::toe(side)), c.mix(1.0)));
-        elements.push(seg(pose.pos(Bone::toe(side)), l.toe, c.mix(1.0)));
-        elements.push(seg(pose.pos(Bone::Neck), pose.pos(Bone::upper_arm(side)), DESIGN.mix(0.6)));
-        elements.push(seg(pose.pos(Bone::upper_arm(side)), pose.pos(Bone::forearm(side)), c.mix(0.6)));
-        elements.push(seg(pose.pos(Bone::forearm(side)), pose.pos(Bone::hand(side)), c.mix(0.6)));
+/// A figure's segments in their colours: the trunk black, limbs red (right) and blue
+/// (left), the arms fainter than the legs.
+fn body(f: &Figure) -> Vec<PathElement<(f64, f64)>> {
+    let colour = |side: Side| if side == Side::Right { RIGHT } else { LEFT };
+    f.segments
+        .iter()
+        .map(|&(a, b, part)| {
+            let c = match part {
+                Part::Trunk => DESIGN.mix(1.0),
+                Part::Leg(side) => colour(side).mix(1.0),
+                Part::Arm(side) => colour(side).mix(0.6),
+            };
+            PathElement::new(vec![a, b], c.stroke_width(2))
+        })
+        .collect()
+}
+
+/// The labels under a figure, hung from the lowest ground of its slot: its % of the cycle,
+/// then each event it is the nearest instant to, in the colour of the event's leg.
+fn labels(f: &Figure, i: &chrono::Instant, scale: f64) -> Vec<Text<'static, (f64, f64), String>> {
+    let below = |line: usize| (f.centre, f.lowest_ground() - (8.0 + LINE_PX * line as f64) / scale);
+    let style =
+        |c: &'static RGBColor| TextStyle::from((FONT, LABEL_FONT)).color(c).pos(Pos::new(HPos::Center, VPos::Top));
+    let mut out = vec![Text::new(format!("{:.0} %", i.pct), below(0), style(&DESIGN))];
+    for (k, name) in i.events.iter().enumerate() {
+        let c = if name.starts_with('R') { &RIGHT } else { &LEFT };
+        out.push(Text::new((*name).to_string(), below(k + 1), style(c)));
     }
-    elements
+    out
 }
