@@ -166,7 +166,12 @@ where
 
 fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Result<()> {
     let backend = CrosstermBackend::new(BufWriter::with_capacity(1 << 16, io::stdout()));
-    let mut terminal = Terminal::new(backend)?;
+    // Never dropped: ratatui's Terminal shows the cursor on drop and, when that fails (the
+    // link has dropped), reports it with eprintln!, which panics on the dead terminal — the
+    // lab then died with exit 101 before it wrote the unsaved edits to the recovery file (a
+    // third of the hang-up tests under load). TerminalGuard restores the terminal instead,
+    // ignoring errors; each frame is flushed as it is drawn, so nothing is left unwritten.
+    let mut terminal = std::mem::ManuallyDrop::new(Terminal::new(backend)?);
     // Not `terminal.clear()`: it asks the terminal for the cursor position first, and a
     // terminal that never answers (some web and serial consoles) would stop the lab there.
     execute!(terminal.backend_mut(), Clear(ClearType::All))?;
