@@ -115,6 +115,10 @@ pub struct Comparison {
     pub reference_speed_mps: f64,
     /// Curve by curve.
     pub curves: Vec<CurveComparison>,
+    /// The walk's spatiotemporal figures, as the report's summary measures them: cadence
+    /// (steps/min), stride length (m), stance (% of the cycle). The reference file has no norms
+    /// for them beyond its speed, so they are printed beside the joint comparison, not compared.
+    pub spatiotemporal: [(&'static str, f64); 3],
 }
 
 fn extreme(points: &[(f64, f64)], larger: bool) -> (f64, f64) {
@@ -195,7 +199,13 @@ pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comp
             reference_min: extreme(&theirs_pts, false),
         });
     }
-    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves }
+    let figure = |key: &str| walk.summary.iter().find(|(k, _)| k == key).map_or(f64::NAN, |(_, v)| *v);
+    let spatiotemporal = [
+        ("cadence_spm", figure("cadence_spm")),
+        ("stride_length_m", figure("stride_length_m")),
+        ("stance_pct", figure("stance_pct")),
+    ];
+    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves, spatiotemporal }
 }
 
 #[cfg(test)]

@@ -83,3 +83,18 @@ fn a_bad_reference_is_refused_with_its_place() {
     assert!(e.contains("ref.csv:2:") && e.contains("not a number"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_walks_spatiotemporal_figures_come_with_the_comparison_and_agree_with_its_speed() {
+    let o = gaitlab(&["compare", "configs/stroll.toml", "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let first: serde_json::Value =
+        serde_json::from_str(String::from_utf8_lossy(&o.stdout).lines().next().unwrap()).unwrap();
+    let f = |k: &str| first[k].as_f64().unwrap();
+    // Speed = stride x strides per second: the three are measured apart, from the frames.
+    let from_steps = f("stride_length_m") * f("cadence_spm") / 120.0;
+    assert!((from_steps - f("speed_mps")).abs() < 0.02 * f("speed_mps"), "{first}");
+    assert!((55.0..=70.0).contains(&f("stance_pct")), "{first}");
+    let table = String::from_utf8_lossy(&gaitlab(&["compare", "configs/stroll.toml"]).stdout).to_string();
+    assert!(table.lines().nth(1).unwrap().starts_with("# the walk: cadence "), "{table}");
+}

@@ -33,6 +33,11 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
         c.speed_mps,
         c.reference_speed_mps
     )?;
+    let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
+    writeln!(
+        out,
+        "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} % (the reference gives no spatiotemporal norms beyond its speed)"
+    )?;
     writeln!(
         out,
         "# deviation = walk - reference; r = Pearson r of the shapes; out1/out2 = share of the cycle beyond mean +- 1/2 SD; rom = range of motion difference; * shape only (means removed)"
@@ -80,6 +85,9 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         let mut line = serde_json::to_value(k).map_err(io::Error::other)?;
         line["speed_mps"] = c.speed_mps.into();
         line["reference_speed_mps"] = c.reference_speed_mps.into();
+        for (key, value) in c.spatiotemporal {
+            line[key] = value.into();
+        }
         writeln!(out, "{line}")?;
     }
     Ok(())
