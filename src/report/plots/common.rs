@@ -34,6 +34,29 @@ pub(super) fn y_range(series: &[&[(f64, f64)]]) -> std::ops::Range<f64> {
 /// Legend label text size (px), shared so the legend's footprint can be estimated.
 pub(super) const LEGEND_FONT_PX: u32 = 20;
 
+/// A chart over 0–100 % (of the gait cycle, or of a curve's own span) on `area`, with the
+/// report's caption, margins and label areas: the cycle and swing charts share its layout,
+/// so their axes line up and neither cuts its last label.
+pub(super) fn percent_chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, plotters::coord::Shift>,
+    title: &str,
+    y: std::ops::Range<f64>,
+) -> Result<
+    ChartContext<'a, DB, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
+    String,
+> {
+    ChartBuilder::on(area)
+        .caption(title, (FONT, 30))
+        .margin(12)
+        // The last x label ("100") is centred on the axis's end: room for its right half
+        // (in the rightmost chart it ran off the image).
+        .margin_right(28)
+        .x_label_area_size(55)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0f64..100f64, y)
+        .map_err(err)
+}
+
 /// Pixel height of a legend of `rows` labels (measured on the embedded font: 3 rows, 84 px).
 pub(super) fn legend_height_px(rows: usize) -> f64 {
     28.0 * rows as f64 + 6.0

@@ -1,7 +1,7 @@
 //! Plots over the gait cycle, mean and min–max band of the steady cycles: the pelvis and the
 //! joint angles, with compared walks overlaid and measured adults' mean ± 1 SD behind them.
 
-use super::common::{FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_height_px, y_range};
+use super::common::{FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_height_px, percent_chart, y_range};
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
 use crate::normative::Reference;
@@ -30,15 +30,7 @@ fn cycle_chart<DB: DrawingBackend>(
     let span = y.end - y.start;
     let y = y.start..y.start + span * plot_px / (plot_px - headroom_px);
     let label_y = y.end - (y.end - y.start) * (legend_px + 4.0) / plot_px;
-    let mut chart = ChartBuilder::on(area)
-        .caption(title, (FONT, 30))
-        .margin(12)
-        // The last x label ("100") is centred on the axis's end: room for its right half.
-        .margin_right(28)
-        .x_label_area_size(55)
-        .y_label_area_size(80)
-        .build_cartesian_2d(0f64..100f64, y.clone())
-        .map_err(err)?;
+    let mut chart = percent_chart(area, title, y.clone())?;
     chart
         .configure_mesh()
         .x_desc("% of gait cycle")

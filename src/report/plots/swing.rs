@@ -1,7 +1,7 @@
 //! Plots of the swing's curves over their own span: each design curve, and each step's
 //! curve as the planner adapted it to the terrain.
 
-use super::common::{DESIGN, FONT, LEGEND_FONT_PX, RIGHT, Res, err, legend_corner, y_range};
+use super::common::{DESIGN, FONT, LEGEND_FONT_PX, RIGHT, Res, err, legend_corner, percent_chart, y_range};
 use super::data::Data;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
@@ -20,16 +20,7 @@ fn curve_chart<DB: DrawingBackend>(
     let mut all: Vec<&[(f64, f64)]> = vec![design];
     all.extend(steps.iter().map(Vec::as_slice));
     let y = y_range(&all);
-    let mut chart = ChartBuilder::on(area)
-        .caption(title, (FONT, 30))
-        .margin(12)
-        // The last x label ("100") is centred on the axis's end: room for its right half
-        // (in the rightmost chart it ran off the image).
-        .margin_right(28)
-        .x_label_area_size(55)
-        .y_label_area_size(80)
-        .build_cartesian_2d(0f64..100f64, y.clone())
-        .map_err(err)?;
+    let mut chart = percent_chart(area, title, y.clone())?;
     chart
         .configure_mesh()
         .x_desc(x_desc)
