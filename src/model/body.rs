@@ -263,7 +263,7 @@ pub(crate) const BALL_FRACTION: f64 = 0.75;
 /// length. The ankle joint is not over the heel: anatomically the malleoli stand about a fifth
 /// of the foot ahead of the heel's back. 0.15 is what the normative joint angles ask of this
 /// leg chain: put through it (forward kinematics, a test in `src/normative.rs`), they set the leading
-/// heel and the trailing ball on the ground at heel strike within 1 cm of each other, where
+/// heel and the trailing ball on the ground at heel strike 1.03 cm apart in height, where
 /// a heel under the ankle leaves them 3.4 cm apart.
 pub(crate) const HEEL_FRACTION: f64 = 0.15;
 
