@@ -6,6 +6,12 @@
 //! same columns can replace it. Pelvic tilt is compared as a shape (both means removed):
 //! the measured tilt carries a ~10° offset that depends on the marker model, the walk's tilt
 //! is a swing about its posture.
+//!
+//! The walk's cadence and stride are set beside norms for its own speed
+//! (`data/normative/spatiotemporal_by_speed.csv`, the same dataset's treadmill trials at 40–115 %
+//! of comfortable speed), interpolated between the two speed blocks around it: the curves come
+//! at one speed only, but cadence and stride change with speed far more than with anything a
+//! config sets, so a norm at the wrong speed would say little.
 
 use crate::analysis::Run;
 use crate::error::{Error, Result};
@@ -19,6 +25,14 @@ pub const BUILT_IN_SOURCE: &str = "Fukuchi, Fukuchi & Duarte 2018 (24 young adul
 
 /// The built-in reference's text.
 pub const BUILT_IN: &str = include_str!("../data/normative/normative_adult_walking.csv");
+
+/// How the built-in spatiotemporal norms are named.
+pub const SPEED_NORMS_SOURCE: &str =
+    "Fukuchi, Fukuchi & Duarte 2018 (22 young adults, treadmill at 40-115 % of comfortable speed, CC BY 4.0)";
+
+/// The built-in spatiotemporal norms by speed: `data/normative/spatiotemporal_by_speed.csv`
+/// (source, licence and derivation beside it).
+pub const BUILT_IN_SPEED_NORMS: &str = include_str!("../data/normative/spatiotemporal_by_speed.csv");
 
 /// The curves compared: (reference column stem, the walk's curve, compared as a shape).
 const COMPARED: [(&str, &str, bool); 6] = [
@@ -74,6 +88,122 @@ impl Reference {
     }
 }
 
+/// One speed block of spatiotemporal norms: mean and between-subject SD.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedBlock {
+    /// The block's mean walking speed (m/s).
+    pub speed_mps: f64,
+    /// Cadence (steps/min): mean, SD.
+    pub cadence_spm: (f64, f64),
+    /// Stride length, heel strike to heel strike of one foot (m): mean, SD.
+    pub stride_length_m: (f64, f64),
+}
+
+/// Spatiotemporal norms at several speeds, slowest first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpeedNorms {
+    /// The blocks, speeds strictly rising.
+    pub blocks: Vec<SpeedBlock>,
+}
+
+/// The norms at one walk's speed, and which blocks they came from.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct NormsAtSpeed {
+    /// The speed asked for (m/s).
+    pub speed_mps: f64,
+    /// The speeds of the blocks interpolated between (m/s); equal when one block was taken
+    /// (the speed is at or beyond the data's ends).
+    pub from_block_mps: f64,
+    /// See `from_block_mps`.
+    pub to_block_mps: f64,
+    /// Cadence norm (steps/min): mean, SD.
+    pub cadence_spm: (f64, f64),
+    /// Stride length norm (m): mean, SD.
+    pub stride_length_m: (f64, f64),
+}
+
+impl SpeedNorms {
+    /// The built-in table, parsed (a test checks that it does).
+    #[must_use]
+    pub fn built_in() -> SpeedNorms {
+        SpeedNorms::parse(BUILT_IN_SPEED_NORMS, "built-in speed norms").expect("the built-in table parses")
+    }
+
+    /// Parses the built-in file's format: `#` comments, a header, one row a speed block.
+    pub fn parse(text: &str, label: &str) -> Result<SpeedNorms> {
+        let bad = |line: usize, message: String| Error::Usage(format!("{label}:{line}: {message}"));
+        let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'));
+        let (header_line, header) = rows.next().ok_or_else(|| bad(1, "no header".into()))?;
+        let columns: Vec<&str> = header.split(',').map(str::trim).collect();
+        let column = |name: &str| {
+            columns.iter().position(|c| *c == name).ok_or_else(|| bad(header_line + 1, format!("no column `{name}`")))
+        };
+        let wanted = ["speed_m_s", "cadence_mean_spm", "cadence_sd_spm", "stride_length_mean_m", "stride_length_sd_m"];
+        let at: Vec<usize> = wanted.iter().map(|w| column(w)).collect::<Result<_>>()?;
+        let mut blocks: Vec<SpeedBlock> = Vec::new();
+        for (n, line) in rows {
+            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            let value =
+                |i: usize| cells.get(i).and_then(|c| c.parse::<f64>().ok()).filter(|v| v.is_finite() && *v > 0.0);
+            let v: Vec<f64> = at
+                .iter()
+                .map(|&i| value(i))
+                .collect::<Option<_>>()
+                .ok_or_else(|| bad(n + 1, format!("expected positive numbers in {}", wanted.join(", "))))?;
+            if blocks.last().is_some_and(|b| b.speed_mps >= v[0]) {
+                return Err(bad(n + 1, "speeds must rise from row to row".into()));
+            }
+            blocks.push(SpeedBlock { speed_mps: v[0], cadence_spm: (v[1], v[2]), stride_length_m: (v[3], v[4]) });
+        }
+        if blocks.len() < 2 {
+            return Err(bad(header_line + 1, format!("{} speed blocks; expected at least 2", blocks.len())));
+        }
+        Ok(SpeedNorms { blocks })
+    }
+
+    /// The norms at `speed_mps`: linear interpolation (means and SDs) between the two blocks
+    /// around it, or the end block beyond either end (never extrapolated).
+    #[must_use]
+    pub fn at(&self, speed_mps: f64) -> NormsAtSpeed {
+        let (first, last) = (self.blocks[0], self.blocks[self.blocks.len() - 1]);
+        let (lo, hi) = if speed_mps.is_nan() || speed_mps <= first.speed_mps {
+            (first, first)
+        } else if speed_mps >= last.speed_mps {
+            (last, last)
+        } else {
+            let i = self.blocks.windows(2).position(|w| speed_mps < w[1].speed_mps).unwrap_or(0);
+            (self.blocks[i], self.blocks[i + 1])
+        };
+        let t =
+            if hi.speed_mps > lo.speed_mps { (speed_mps - lo.speed_mps) / (hi.speed_mps - lo.speed_mps) } else { 0.0 };
+        let mix = |a: (f64, f64), b: (f64, f64)| (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+        NormsAtSpeed {
+            speed_mps,
+            from_block_mps: lo.speed_mps,
+            to_block_mps: hi.speed_mps,
+            cadence_spm: mix(lo.cadence_spm, hi.cadence_spm),
+            stride_length_m: mix(lo.stride_length_m, hi.stride_length_m),
+        }
+    }
+}
+
+impl NormsAtSpeed {
+    /// Where the norms came from, in words: "the 1.232 m/s block", "between the 1.232 and
+    /// 1.417 m/s blocks", or "the 1.417 m/s block, the fastest (the walk is faster)".
+    #[must_use]
+    pub fn blocks_used(&self) -> String {
+        if self.from_block_mps < self.to_block_mps {
+            format!("interpolated between the {:.3} and {:.3} m/s blocks", self.from_block_mps, self.to_block_mps)
+        } else if self.speed_mps > self.to_block_mps + 1e-9 {
+            format!("the fastest block, {:.3} m/s (the walk is faster; not extrapolated)", self.to_block_mps)
+        } else if self.speed_mps < self.from_block_mps - 1e-9 {
+            format!("the slowest block, {:.3} m/s (the walk is slower; not extrapolated)", self.from_block_mps)
+        } else {
+            format!("the {:.3} m/s block", self.from_block_mps)
+        }
+    }
+}
+
 /// One curve of the walk against the reference.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct CurveComparison {
@@ -116,9 +246,12 @@ pub struct Comparison {
     /// Curve by curve.
     pub curves: Vec<CurveComparison>,
     /// The walk's spatiotemporal figures, as the report's summary measures them: cadence
-    /// (steps/min), stride length (m), stance (% of the cycle). The reference file has no norms
-    /// for them beyond its speed, so they are printed beside the joint comparison, not compared.
+    /// (steps/min), stride length (m), stance (% of the cycle); cadence and stride are set
+    /// beside `spatiotemporal_norms`.
     pub spatiotemporal: [(&'static str, f64); 3],
+    /// Cadence and stride norms at the walk's speed (the built-in table by speed; no stance
+    /// norm by speed is available).
+    pub spatiotemporal_norms: NormsAtSpeed,
 }
 
 fn extreme(points: &[(f64, f64)], larger: bool) -> (f64, f64) {
@@ -205,7 +338,8 @@ pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comp
         ("stride_length_m", figure("stride_length_m")),
         ("stance_pct", figure("stance_pct")),
     ];
-    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves, spatiotemporal }
+    let spatiotemporal_norms = SpeedNorms::built_in().at(speed_mps);
+    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves, spatiotemporal, spatiotemporal_norms }
 }
 
 #[cfg(test)]

@@ -98,3 +98,33 @@ fn the_walks_spatiotemporal_figures_come_with_the_comparison_and_agree_with_its_
     let table = String::from_utf8_lossy(&gaitlab(&["compare", "configs/stroll.toml"]).stdout).to_string();
     assert!(table.lines().nth(1).unwrap().starts_with("# the walk: cadence "), "{table}");
 }
+
+/// The cadence and stride norms are those of the walk's own speed, and the table and every
+/// JSON line say which blocks they came from; the joint curves' reference speed stays named.
+#[test]
+fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
+    let norms = gaitlab::normative::SpeedNorms::built_in();
+    for (config, blocks) in [
+        ("configs/stroll.toml", "interpolated between the 0.862 and 1.048 m/s blocks"),
+        ("configs/default.toml", "interpolated between the 1.232 and 1.417 m/s blocks"),
+        ("configs/brisk.toml", "the fastest block, 1.417 m/s (the walk is faster; not extrapolated)"),
+    ] {
+        let o = gaitlab(&["compare", config, "--json"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let stdout = String::from_utf8_lossy(&o.stdout).to_string();
+        for line in stdout.lines() {
+            let l: serde_json::Value = serde_json::from_str(line).unwrap();
+            let f = |k: &str| l[k].as_f64().unwrap();
+            let at = norms.at(f("speed_mps"));
+            // To the last bits JSON's decimal text allows.
+            assert!((f("cadence_norm_spm") - at.cadence_spm.0).abs() < 1e-9, "{config}");
+            assert!((f("stride_length_norm_sd_m") - at.stride_length_m.1).abs() < 1e-12, "{config}");
+            assert_eq!((f("norm_from_block_mps"), f("norm_to_block_mps")), (at.from_block_mps, at.to_block_mps));
+            assert_eq!(f("reference_speed_mps"), 1.245, "the curves' reference speed");
+        }
+        let table = String::from_utf8_lossy(&gaitlab(&["compare", config]).stdout).to_string();
+        let norms_line = table.lines().nth(2).unwrap();
+        assert!(norms_line.starts_with("# norms at ") && norms_line.contains(blocks), "{config}: {table}");
+        assert!(table.lines().next().unwrap().ends_with("at 1.245 m/s; right gait cycle, every 2 %"), "{table}");
+    }
+}

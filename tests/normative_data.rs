@@ -40,3 +40,70 @@ fn the_normative_curves_are_adult_walking() {
     let (h, at) = low(2, 40, 70);
     assert!(h < -5.0 && (48.0..=58.0).contains(&at), "{h} at {at}");
 }
+
+/// The spatiotemporal norms by speed (`spatiotemporal_by_speed.csv`, Fukuchi et al. 2018 via
+/// BMClab/h2a_age_spt): six treadmill blocks whose figures agree with their own speeds, and
+/// which rise with speed as cadence and stride do in every adult gait study.
+#[test]
+fn the_spatiotemporal_norms_by_speed_are_adult_walking_at_six_speeds() {
+    use gaitlab::normative::SpeedNorms;
+    let text = include_str!("../data/normative/spatiotemporal_by_speed.csv");
+    let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert_eq!(
+        header,
+        "trial,pct_of_comfortable,n_subjects,speed_m_s,speed_sd_m_s,cadence_mean_spm,cadence_sd_spm,stride_length_mean_m,stride_length_sd_m"
+    );
+    let norms = SpeedNorms::built_in();
+    let speeds: Vec<f64> = norms.blocks.iter().map(|b| b.speed_mps).collect();
+    assert_eq!(speeds, [0.493, 0.678, 0.862, 1.048, 1.232, 1.417]);
+    for w in norms.blocks.windows(2) {
+        assert!(w[1].cadence_spm.0 > w[0].cadence_spm.0 + 5.0, "cadence rises with speed: {w:?}");
+        assert!(w[1].stride_length_m.0 > w[0].stride_length_m.0 + 0.08, "stride rises with speed: {w:?}");
+    }
+    for b in &norms.blocks {
+        // Units: steps/min and metres, so speed = stride x cadence / 120 (two steps a stride).
+        let implied = b.stride_length_m.0 * b.cadence_spm.0 / 120.0;
+        assert!((implied / b.speed_mps - 1.0).abs() < 0.01, "{b:?}: {implied}");
+        assert!((5.0..8.0).contains(&b.cadence_spm.1) && (0.07..0.14).contains(&b.stride_length_m.1), "{b:?}");
+    }
+}
+
+/// Which blocks a walk's speed takes: the two around it, interpolated; the end block beyond
+/// the data (never extrapolated); a block's own speed gives that block.
+#[test]
+fn a_walks_speed_takes_the_blocks_around_it() {
+    use gaitlab::normative::SpeedNorms;
+    let norms = SpeedNorms::built_in();
+    let pick = |v: f64| {
+        let n = norms.at(v);
+        (n.from_block_mps, n.to_block_mps)
+    };
+    assert_eq!(pick(0.8), (0.678, 0.862));
+    assert_eq!(pick(1.3), (1.232, 1.417));
+    assert_eq!(pick(1.6), (1.417, 1.417));
+    assert_eq!(pick(0.3), (0.493, 0.493));
+    assert_eq!(pick(1.048), (1.048, 1.232));
+    let exact = norms.at(1.048);
+    assert!((exact.cadence_spm.0 - 107.5).abs() < 1e-9 && (exact.stride_length_m.0 - 1.169).abs() < 1e-9);
+    // Halfway between T05 and T06: the means' and SDs' midpoints.
+    let mid = norms.at((1.232 + 1.417) / 2.0);
+    assert!((mid.cadence_spm.0 - (115.8 + 123.1) / 2.0).abs() < 1e-9, "{mid:?}");
+    assert!((mid.stride_length_m.1 - (0.122 + 0.134) / 2.0).abs() < 1e-9, "{mid:?}");
+    assert_eq!(norms.at(1.6).cadence_spm, (123.1, 6.7), "the fastest block, unchanged");
+    assert!(norms.at(1.6).blocks_used().contains("the fastest block, 1.417 m/s"));
+    assert!(norms.at(0.8).blocks_used().contains("between the 0.678 and 0.862 m/s blocks"));
+    assert!(norms.at(f64::NAN).cadence_spm.0.is_finite(), "never NaN norms");
+}
+
+#[test]
+fn a_bad_speed_table_is_refused_with_its_place() {
+    use gaitlab::normative::SpeedNorms;
+    let text = include_str!("../data/normative/spatiotemporal_by_speed.csv");
+    let swapped = text.replace("T02,55,22,0.678", "T02,55,22,0.400");
+    let e = SpeedNorms::parse(&swapped, "s.csv").unwrap_err().to_string();
+    assert!(e.starts_with("s.csv:5:") && e.contains("speeds must rise"), "{e}");
+    let e = SpeedNorms::parse(&text.replace("cadence_sd_spm", "cad_sd"), "s.csv").unwrap_err().to_string();
+    assert!(e.contains("no column `cadence_sd_spm`"), "{e}");
+    let e = SpeedNorms::parse(&text.replace(",72.7,", ",nan,"), "s.csv").unwrap_err().to_string();
+    assert!(e.starts_with("s.csv:4:") && e.contains("positive numbers"), "{e}");
+}

@@ -307,6 +307,16 @@ fn the_summary_compares_the_walk_with_measured_gait_as_compare_does() {
     assert!(section.contains(&format!("`brisk` at {speed:.3} m/s against Fukuchi")), "{section}");
     assert!(section.contains("at 1.245 m/s"), "the reference's speed: {section}");
     assert!(!section.contains("The table is for"), "a lone walk needs no such note");
+    // brisk (1.75 m/s) is faster than the fastest block of spatiotemporal norms: it says so.
+    let norm = lines[0]["cadence_norm_spm"].as_f64().unwrap();
+    assert!(section.contains(&format!("at the walk's {speed:.3} m/s (the fastest block, 1.417 m/s")), "{section}");
+    assert!(
+        section.contains(&format!(
+            "| cadence (steps/min) | {:.1} | {norm:.1} ± ",
+            lines[0]["cadence_spm"].as_f64().unwrap()
+        )),
+        "{section}"
+    );
     let num = |v: &serde_json::Value| v.as_f64().unwrap();
     let pair = |v: &serde_json::Value| (num(&v[0]), num(&v[1]));
     for l in &lines {

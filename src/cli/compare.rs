@@ -34,9 +34,19 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
         c.reference_speed_mps
     )?;
     let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
+    writeln!(out, "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} %")?;
+    let n = &c.spatiotemporal_norms;
+    let (cad_z, stride_z) = (sd_units(cadence, n.cadence_spm), sd_units(stride, n.stride_length_m));
     writeln!(
         out,
-        "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} % (the reference gives no spatiotemporal norms beyond its speed)"
+        "# norms at {:.3} m/s ({}; {}): cadence {:.1} +- {:.1} steps/min (walk {cad_z:+.2} SD), stride {:.3} +- {:.3} m (walk {stride_z:+.2} SD); no stance norm by speed",
+        n.speed_mps,
+        normative::SPEED_NORMS_SOURCE,
+        n.blocks_used(),
+        n.cadence_spm.0,
+        n.cadence_spm.1,
+        n.stride_length_m.0,
+        n.stride_length_m.1
     )?;
     writeln!(
         out,
@@ -80,6 +90,11 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
     Ok(())
 }
 
+/// How many of the norm's SDs the walk's figure lies from its mean (+: above).
+fn sd_units(walk: f64, (mean, sd): (f64, f64)) -> f64 {
+    (walk - mean) / sd
+}
+
 fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
     for k in &c.curves {
         let mut line = serde_json::to_value(k).map_err(io::Error::other)?;
@@ -88,6 +103,13 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         for (key, value) in c.spatiotemporal {
             line[key] = value.into();
         }
+        let n = &c.spatiotemporal_norms;
+        line["norm_from_block_mps"] = n.from_block_mps.into();
+        line["norm_to_block_mps"] = n.to_block_mps.into();
+        line["cadence_norm_spm"] = n.cadence_spm.0.into();
+        line["cadence_norm_sd_spm"] = n.cadence_spm.1.into();
+        line["stride_length_norm_m"] = n.stride_length_m.0.into();
+        line["stride_length_norm_sd_m"] = n.stride_length_m.1.into();
         writeln!(out, "{line}")?;
     }
     Ok(())

@@ -88,6 +88,29 @@ pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Compariso
     for k in &c.curves {
         row(md, k);
     }
+    spatiotemporal(md, c);
+}
+
+/// The walk's cadence and stride beside the norms at its own speed (the figures
+/// `gaitlab compare` prints above its table).
+fn spatiotemporal(md: &mut String, c: &Comparison) {
+    let n = &c.spatiotemporal_norms;
+    let _ = write!(
+        md,
+        "\nSpatiotemporal figures against {} at the walk's {:.3} m/s ({}):\n\n\
+         | figure | walk | norm, mean ± SD | walk − norm (SD) |\n|---|---:|---:|---:|\n",
+        normative::SPEED_NORMS_SOURCE,
+        n.speed_mps,
+        n.blocks_used()
+    );
+    let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
+    for (name, walk, (mean, sd), digits) in
+        [("cadence (steps/min)", cadence, n.cadence_spm, 1), ("stride length (m)", stride, n.stride_length_m, 3)]
+    {
+        let _ =
+            writeln!(md, "| {name} | {walk:.digits$} | {mean:.digits$} ± {sd:.digits$} | {:+.2} |", (walk - mean) / sd);
+    }
+    let _ = writeln!(md, "| stance (%) | {stance:.1} | no norm by speed | |");
 }
 
 fn row(md: &mut String, k: &CurveComparison) {
