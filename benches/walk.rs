@@ -1,5 +1,7 @@
 //! Speed of the walk model: one full-body frame update, the update that plans a swing at
-//! toe-off, writing the joint table, and one step's pelvis optimisation by each method. Figures and machine in `benches/README.md`.
+//! toe-off, writing the joint table, and one step's pelvis optimisation by each method; and of
+//! the report: its glTF file alone, and the whole default report. Figures and machine in
+//! `benches/README.md`.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use gaitlab::config::presets;
@@ -137,5 +139,40 @@ fn optimiser(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows, optimiser);
+/// The report on the default config at its `sim.cycles` (10 cycles, 60 fps, 653 frames) as
+/// `gaitlab report configs/default.toml` makes it (issue 15: ≤ 1.5 s with its GIF and glTF),
+/// and its `walk.glb` alone from the recorded poses.
+fn report(c: &mut Criterion) {
+    use gaitlab::report::{ReportInput, resolve_out, write_report};
+    let text = presets::default_text();
+    let params = gaitlab::config::load_text(text, "default.toml", &[]).unwrap();
+    let run =
+        gaitlab::analysis::record(&params, f64::from(params.sim.cycles), params.sim.fps, gaitlab::analysis::Keep::ALL)
+            .unwrap();
+    let mut group = c.benchmark_group("report");
+    group.bench_function("walk.glb, default, 10 cycles", |b| {
+        b.iter(|| black_box(gaitlab::output::gltf::glb(&run.gait.resolved().dims, &run.poses, run.fps)).len());
+    });
+    let dir = std::env::temp_dir().join(format!("gaitlab-bench-report-{}", std::process::id()));
+    let input = ReportInput {
+        name: "default".into(),
+        source_text: text,
+        params: &params,
+        cycles: params.sim.cycles,
+        fps: params.sim.fps,
+        compare: Vec::new(),
+        ik_solvers: Vec::new(),
+    };
+    group.sample_size(10);
+    group.bench_function("whole report, default, 10 cycles", |b| {
+        b.iter(|| {
+            let target = resolve_out(&dir, false).unwrap();
+            write_report(&input, &target, &mut |_| {}).unwrap()
+        });
+    });
+    group.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows, optimiser, report);
 criterion_main!(benches);

@@ -101,6 +101,8 @@ impl Session {
         let parser = self.screen();
         assert!(!parser.screen().alternate_screen());
         assert!(!parser.screen().hide_cursor());
+        // Mouse capture, if the lab turned it on, is off again.
+        assert_eq!(parser.screen().mouse_protocol_mode(), vt100::MouseProtocolMode::None);
     }
 }
 
@@ -122,6 +124,28 @@ fn the_lab_runs_in_a_pty_answers_keys_and_quits_cleanly() {
     s.send(b"y");
     assert_eq!(s.wait_exit(), 0);
     s.assert_restored();
+}
+
+#[test]
+fn the_mouse_is_captured_clicks_work_and_no_mouse_leaves_it_alone() {
+    let mut s = start(&["configs/default.toml"]);
+    let screen = s.wait_for("Parameters");
+    assert_ne!(s.screen().screen().mouse_protocol_mode(), vt100::MouseProtocolMode::None);
+    // A click (SGR press and release, 1-based cells) on the Joints tab shows that panel.
+    let tabs = screen.lines().next().unwrap();
+    let column = tabs[..tabs.find("Joints").unwrap()].chars().count() + 2;
+    s.send(format!("\x1b[<0;{column};1M\x1b[<0;{column};1m").as_bytes());
+    s.wait_for("Joint angles");
+    s.send(b"q");
+    assert_eq!(s.wait_exit(), 0);
+    s.assert_restored();
+    let mut s = start(&["--no-mouse", "configs/default.toml"]);
+    s.wait_for("Parameters");
+    assert_eq!(s.screen().screen().mouse_protocol_mode(), vt100::MouseProtocolMode::None);
+    s.send(b"q");
+    assert_eq!(s.wait_exit(), 0);
+    s.assert_restored();
+    assert!(!String::from_utf8_lossy(&s.output.lock().unwrap()).contains("\x1b[?1000"), "no mouse bytes at all");
 }
 
 #[test]

@@ -40,6 +40,9 @@ pub struct LabArgs {
     /// How curves and the figure are drawn: braille, halfblock or block (for fonts without braille)
     #[arg(long, default_value = "braille")]
     pub(crate) marker: String,
+    /// Leave the mouse to the terminal (no clicking, dragging or wheel in the lab)
+    #[arg(long)]
+    pub no_mouse: bool,
     /// Override a key: --set walk.speed_mps=1.4 (repeatable)
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub sets: Vec<String>,
@@ -309,7 +312,13 @@ fn lab(config: Option<PathBuf>, args: &LabArgs) -> u8 {
         eprintln!("gaitlab: --marker {}: unknown; valid: {}", args.marker, names.join(", "));
         return 2;
     };
-    let code = crate::tui::run(&crate::tui::Options { config, sets: args.sets.clone(), fps: args.fps, marker });
+    let code = crate::tui::run(&crate::tui::Options {
+        config,
+        sets: args.sets.clone(),
+        fps: args.fps,
+        marker,
+        mouse: !args.no_mouse,
+    });
     u8::try_from(code).unwrap_or(1)
 }
 

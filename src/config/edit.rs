@@ -5,10 +5,15 @@ use crate::config::schema::{self, Value};
 use crate::model::params::WalkParams;
 use toml_edit::{DocumentMut, Item, Table};
 
-/// The edited document as text.
+/// The edited document as text. `keys` are dotted keys, or `curves.<name>` for a curve
+/// override (written as `[curves.<name>] points = [...]`, removed when `params` has none).
 pub fn edited_text(source_text: &str, params: &WalkParams, keys: &[&str]) -> Result<String, String> {
     let mut doc: DocumentMut = source_text.parse().map_err(|e| format!("the file's TOML no longer parses: {e}"))?;
     for key in keys {
+        if let Some(name) = key.strip_prefix("curves.") {
+            edit_curve(&mut doc, name, params.curves.get(name))?;
+            continue;
+        }
         let spec = schema::spec(key).ok_or_else(|| format!("unknown key {key}"))?;
         let (group, name) = (spec.group(), spec.name());
         if !doc.contains_key(group) {
@@ -38,4 +43,86 @@ pub fn edited_text(source_text: &str, params: &WalkParams, keys: &[&str]) -> Res
         }
     }
     Ok(doc.to_string())
+}
+
+/// Writes one curve override as `[curves.<name>] points = [[x, y], ...]` (a table appended
+/// where the file has none; other keys and comments kept), or removes it (`None`).
+fn edit_curve(doc: &mut DocumentMut, name: &str, points: Option<&Vec<(f64, f64)>>) -> Result<(), String> {
+    let Some(points) = points else {
+        if let Some(curves) = doc.get_mut("curves").and_then(Item::as_table_mut) {
+            curves.remove(name);
+        }
+        return Ok(());
+    };
+    if !doc.contains_key("curves") {
+        let mut curves = Table::new();
+        // `[curves.<name>]` headers only, no empty `[curves]`.
+        curves.set_implicit(true);
+        doc.insert("curves", Item::Table(curves));
+    }
+    // Comments at the end of the file (the default config's note on curves) stay above a
+    // table appended there, not under it.
+    let trailing = doc.trailing().as_str().unwrap_or_default().to_string();
+    let moved = set_points(doc, name, points, &trailing)?;
+    if moved {
+        doc.set_trailing("");
+    }
+    Ok(())
+}
+
+/// Sets `[curves.<name>] points`; a table created here takes `trailing` (the file's last
+/// comments) above its header. Returns whether it did.
+fn set_points(doc: &mut DocumentMut, name: &str, points: &[(f64, f64)], trailing: &str) -> Result<bool, String> {
+    let curves = doc["curves"].as_table_mut().ok_or("[curves] is not a table in the file")?;
+    let appended = !curves.contains_key(name);
+    if appended {
+        curves.insert(name, Item::Table(Table::new()));
+    }
+    let table = curves[name].as_table_mut().ok_or_else(|| format!("[curves.{name}] is not a table in the file"))?;
+    let moved = appended && !trailing.trim().is_empty();
+    if moved {
+        table.decor_mut().set_prefix(format!("{}\n\n", trailing.trim_end()));
+    }
+    let array: toml_edit::Array =
+        points.iter().map(|&(x, y)| toml_edit::Value::Array(toml_edit::Array::from_iter([x, y]))).collect();
+    let new = toml_edit::Value::Array(array);
+    match table.get_mut("points").and_then(Item::as_value_mut) {
+        // Assigning a value drops its decor (the trailing comment); carry it over.
+        Some(old) => {
+            let decor = old.decor().clone();
+            *old = new;
+            *old.decor_mut() = decor;
+        }
+        None => {
+            table.insert("points", Item::Value(new));
+        }
+    }
+    Ok(moved)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_curve_override_is_appended_replaced_and_removed() {
+        let source = "# mine\n[walk]\nspeed_mps = 1.3\n";
+        let mut params = crate::config::load_text(source, "t", &[]).unwrap();
+        let points = vec![(0.0, 0.0), (0.3, 0.1), (0.6, 0.9), (1.0, 1.0)];
+        params.curves.insert("swing_forward".into(), points.clone());
+        let text = edited_text(source, &params, &["curves.swing_forward"]).unwrap();
+        assert_eq!(
+            text,
+            "# mine\n[walk]\nspeed_mps = 1.3\n\n[curves.swing_forward]\npoints = [[0.0, 0.0], [0.3, 0.1], [0.6, 0.9], [1.0, 1.0]]\n"
+        );
+        let back = crate::config::load_text(&text, "t", &[]).unwrap();
+        assert_eq!(back.curves["swing_forward"], points);
+        params.curves.insert("swing_forward".into(), vec![(0.0, 0.0), (0.2, 0.1), (0.6, 0.9), (1.0, 1.0)]);
+        let again = edited_text(&text, &params, &["curves.swing_forward"]).unwrap();
+        assert!(again.contains("points = [[0.0, 0.0], [0.2, 0.1]"), "{again}");
+        params.curves.clear();
+        let gone = edited_text(&again, &params, &["curves.swing_forward"]).unwrap();
+        assert!(!gone.contains("swing_forward") && gone.starts_with("# mine\n[walk]"), "{gone}");
+        assert!(crate::config::load_text(&gone, "t", &[]).unwrap().curves.is_empty());
+    }
 }

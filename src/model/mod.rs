@@ -1,6 +1,7 @@
 //! The walk model: everything that moves the body, with no terminal, file or CLI code.
 //!
 //! - [`curve`]: piecewise Bézier curves y(x) and the operations the walk performs on them;
+//! - [`curve_edit`]: moving a control point by hand with the joins kept smooth;
 //! - [`gait_curves`]: the model's named curves and their default designs;
 //! - [`terrain`]: the ground profile;
 //! - [`body`]: skeleton, segment lengths, poses;
@@ -12,6 +13,7 @@
 
 pub mod body;
 pub mod curve;
+pub mod curve_edit;
 pub mod gait_curves;
 pub mod ik;
 pub mod optimise;

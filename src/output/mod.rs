@@ -1,7 +1,7 @@
 //! Files gaitlab writes, and the one way every writer puts them on disk.
 //!
-//! The rule every output follows (CSV, report folders, BVH, plots, saved configs, recovery
-//! files), in [`target`] and [`folder`]:
+//! The rule every output follows (CSV, report folders, BVH, glTF, plots, saved configs,
+//! recovery files), in [`target`] and [`folder`]:
 //!
 //! - A regular file, or nothing, at the target is replaced atomically (temp file beside it,
 //!   flushed, renamed over it) and keeps its mode and, where permitted, its owner.
@@ -20,6 +20,7 @@
 pub mod bvh;
 pub mod error;
 pub mod folder;
+pub mod gltf;
 pub mod joint_table;
 pub mod pending;
 pub mod target;

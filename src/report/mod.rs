@@ -64,6 +64,7 @@ pub const FILES: &[&str] = &[
     "optimisation.csv",
     "ik.csv",
     "walk.bvh",
+    "walk.glb",
 ];
 
 /// Decides where a report may go (see [`output::folder`]), before any walking is done.
@@ -80,8 +81,8 @@ pub fn write_report(
 ) -> crate::Result<Summary> {
     progress(&format!("simulating {} cycles at {} fps", input.cycles, input.fps));
     // The walk is recorded once with everything the report reads: the IK section measures
-    // the solvers on the questions this very walk asked, the BVH and the stick figure take
-    // its poses, the optimisation plot its middle step's problem.
+    // the solvers on the questions this very walk asked, the BVH, the glTF and the stick
+    // figure take its poses, the optimisation plot its middle step's problem.
     let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)?;
     let ik_targets = &run.ik_targets;
     let summary = metrics::summarise(&run)?;
@@ -117,6 +118,8 @@ pub fn write_report(
         write("ik.csv", &ik_csv(ik_targets, &ik_runs))?;
         progress("writing walk.bvh");
         write_bvh(&file("walk.bvh"), &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
+        progress("writing walk.glb");
+        write_glb(&file("walk.glb"), &run).map_err(|e| format!("cannot write walk.glb: {e}"))?;
         progress("drawing plots");
         let plots = temp.join("plots");
         fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
@@ -161,6 +164,13 @@ fn write_bvh(path: &Path, run: &Recording) -> io::Result<()> {
     for pose in &run.poses {
         crate::output::bvh::write_frame(&mut out, pose, &mut line)?;
     }
+    out.flush()
+}
+
+/// Writes the walk as glTF: the same poses as the BVH, in metres.
+fn write_glb(path: &Path, run: &Recording) -> io::Result<()> {
+    let mut out = io::BufWriter::new(fs::File::create(path)?);
+    output::gltf::write_glb(&mut out, &run.gait.resolved().dims, &run.poses, run.fps)?;
     out.flush()
 }
 

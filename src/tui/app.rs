@@ -16,6 +16,7 @@ use crate::model::walk::frame::Frame;
 use crate::model::walk::{ModelError, Walker};
 use crate::normative::{self, Reference};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
@@ -137,6 +138,13 @@ pub struct App {
     export: Option<Export>,
     /// Effects asked for while handling the current message (taken by [`App::update`]).
     pub(super) effects: Vec<Effect>,
+    /// The curve control point being edited: the arrows move it instead of changing the
+    /// selected parameter.
+    pub point: Option<super::points::PointSel>,
+    /// A mouse drag under way: the parameters before it (the drag is one undo step).
+    pub(super) drag: Option<WalkParams>,
+    /// What the last frame drew where, for the mouse (written by the widgets as they draw).
+    pub(crate) hits: RefCell<super::mouse::Hits>,
 }
 
 impl App {
@@ -177,6 +185,9 @@ impl App {
             export_dir: PathBuf::from("reports"),
             export: None,
             effects: Vec::new(),
+            point: None,
+            drag: None,
+            hits: RefCell::default(),
         };
         app.record_trace();
         Ok(app)
@@ -205,6 +216,18 @@ impl App {
     #[must_use]
     pub fn changed_keys(&self) -> Vec<&'static str> {
         PARAMS.iter().filter(|s| (s.get)(&self.params) != (s.get)(&self.saved)).map(|s| s.key).collect()
+    }
+
+    /// What `s` writes: the changed keys, then `curves.<name>` for each curve override
+    /// added, changed or removed since the file was loaded or saved.
+    #[must_use]
+    pub fn unsaved_keys(&self) -> Vec<String> {
+        let curves = crate::model::gait_curves::CurveName::ALL
+            .iter()
+            .map(|c| c.key())
+            .filter(|k| self.params.curves.get(*k) != self.saved.curves.get(*k))
+            .map(|k| format!("curves.{k}"));
+        self.changed_keys().into_iter().map(String::from).chain(curves).collect()
     }
 
     /// Whether anything differs from the saved file (curve overrides included).
@@ -288,6 +311,7 @@ impl App {
     pub fn update(&mut self, msg: Msg) -> Vec<Effect> {
         match msg {
             Msg::Key(key) => self.on_key(key),
+            Msg::Mouse(event) => self.on_mouse(event),
             Msg::Saved { path, text, keys, after, result } => self.saved(path, text, keys, after, result),
             Msg::ExportStarted(Ok(export)) => {
                 self.export = Some(export);
@@ -320,6 +344,9 @@ impl App {
     /// Does what `action` asks.
     pub(crate) fn perform(&mut self, action: Action) {
         self.message = None;
+        if self.point_action(action) {
+            return;
+        }
         match action {
             Action::Quit => {
                 if self.is_modified() {
@@ -370,15 +397,14 @@ impl App {
                 self.overlay = Some(Overlay::SavePath { text: TextInput::prefilled(text), error: None });
             }
             Action::Presets | Action::Terrain => self.open_picker(action == Action::Terrain),
-            Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
-            Action::NextCurve => self.curve = (self.curve + 1) % CurveView::ALL.len(),
-            Action::PrevCurve => self.curve = (self.curve + CurveView::ALL.len() - 1) % CurveView::ALL.len(),
-            Action::ToggleGrid => self.toggle_grid(),
-            Action::ToggleNorms => self.toggle_norms(),
-            Action::NextPanel => {
-                let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
-                self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
-            }
+            Action::ToggleView
+            | Action::NextCurve
+            | Action::PrevCurve
+            | Action::ToggleGrid
+            | Action::ToggleNorms
+            | Action::NextPanel => self.show(action),
+            // Handled by `point_action` above.
+            Action::NextPoint | Action::PrevPoint | Action::LeavePoints => {}
             Action::RerunOptimiser => self.rerun_optimiser(),
             Action::Export => self.start_export(),
             Action::NextMethod => {
@@ -395,26 +421,6 @@ impl App {
                 self.set_value(spec, &Value::Word(next.name()));
             }
         }
-    }
-
-    /// One curve or a grid of them; on narrow screens the curves share a tab with the other
-    /// panels, so a grid switches to it.
-    fn toggle_grid(&mut self) {
-        self.grid = !self.grid;
-        if self.grid {
-            self.panel = Panel::Curves;
-        }
-        self.message = Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
-    }
-
-    /// The norms band on or off; on narrow screens the joint traces share a tab with the
-    /// other panels, so turning it on switches to them (else the key would look dead).
-    fn toggle_norms(&mut self) {
-        self.norms = !self.norms;
-        if self.norms {
-            self.panel = Panel::Joints;
-        }
-        self.message = Some(if self.norms { "adult norms band on" } else { "adult norms band off" }.into());
     }
 
     /// Opens the preset list, or the terrain kinds with the current one highlighted.
@@ -439,7 +445,8 @@ impl App {
 
     pub(super) fn request_save(&mut self, after: AfterSave) {
         let Some(path) = self.path.clone() else { return };
-        let keys = self.changed_keys();
+        let owned = self.unsaved_keys();
+        let keys: Vec<&str> = owned.iter().map(String::as_str).collect();
         match save::edited_text(&self.source_text, &self.params, &keys) {
             Ok(text) => self.effects.push(Effect::Save { path, text, keys: keys.len(), after }),
             Err(e) => self.saved(path, String::new(), 0, after, Err(e)),
@@ -475,7 +482,9 @@ impl App {
         if !self.is_modified() {
             return None;
         }
-        save::edited_text(&self.source_text, &self.params, &self.changed_keys()).ok()
+        let owned = self.unsaved_keys();
+        let keys: Vec<&str> = owned.iter().map(String::as_str).collect();
+        save::edited_text(&self.source_text, &self.params, &keys).ok()
     }
 
     /// Whether a report is being written.

@@ -76,6 +76,12 @@ pub enum Action {
     NextSolver,
     /// Write a report of the current parameters (in the background).
     Export,
+    /// Select the next control point of the curve shown (the arrows then move it).
+    NextPoint,
+    /// Select the previous control point.
+    PrevPoint,
+    /// Stop editing points: the arrows change parameters again.
+    LeavePoints,
 }
 
 crate::model::variants::named_variants!(Action);
@@ -122,15 +128,17 @@ pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("m", Action::NextMethod),
     ("i", Action::NextSolver),
     ("e", Action::Export),
+    (">", Action::NextPoint),
+    ("<", Action::PrevPoint),
+    ("esc", Action::LeavePoints),
 ];
 
 /// The help's lines: the actions each line covers, and what they do.
 pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::Help], "show or hide this help"),
     (&[Action::Quit], "quit (asks when edits are unsaved)"),
-    (&[Action::Pause, Action::Step], "pause or resume / one frame forward"),
+    (&[Action::Pause, Action::Step, Action::Restart], "pause or resume / one frame / restart"),
     (&[Action::Slower, Action::Faster], "slower / faster (0.125x to 4x)"),
-    (&[Action::Restart], "restart the walk"),
     (&[Action::Up, Action::Down], "select a parameter"),
     (&[Action::GroupUp, Action::GroupDown], "previous / next group"),
     (&[Action::Decrease, Action::Increase], "change it by a fine step"),
@@ -149,6 +157,7 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
     (&[Action::NextSolver], "next leg IK solver (the walk switches live)"),
     (&[Action::Export], "export a report of these parameters"),
+    (&[Action::NextPoint, Action::PrevPoint, Action::LeavePoints], "curve point: select (arrows move it) / done"),
 ];
 
 /// A key as written in `[keys]`: `q`, `Q`, `?`, `space`, `enter`, `ctrl+r`, `shift+left`.
@@ -334,7 +343,8 @@ mod tests {
         // The README's `[keys]` action list: the names users' configs are written in.
         let documented = "quit help pause step slower faster restart up down group_up group_down decrease increase \
             decrease_coarse increase_coarse edit reset undo redo save save_as presets terrain toggle_view next_curve \
-            prev_curve toggle_grid toggle_norms next_panel rerun_optimiser next_method next_ik_solver export";
+            prev_curve toggle_grid toggle_norms next_panel rerun_optimiser next_method next_ik_solver export next_point \
+            prev_point leave_points";
         let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
         assert_eq!(names, documented.split_whitespace().collect::<Vec<_>>());
         for a in Action::ALL {

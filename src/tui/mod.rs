@@ -10,10 +10,13 @@ mod editing;
 pub mod effects;
 pub mod export;
 pub mod keys;
+pub mod mouse;
 pub mod msg;
 mod overlays;
+pub mod points;
 pub mod recovery;
 pub mod save;
+mod showing;
 pub mod text_input;
 pub mod ui;
 pub mod views;
@@ -23,7 +26,7 @@ use crate::config::{self, presets};
 use app::App;
 use ratatui::Terminal;
 use ratatui::backend::{Backend, CrosstermBackend};
-use ratatui::crossterm::event::{self, Event, KeyEventKind};
+use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event, KeyEventKind, MouseEventKind};
 use ratatui::crossterm::terminal::{
     BeginSynchronizedUpdate, Clear, ClearType, EndSynchronizedUpdate, EnterAlternateScreen, LeaveAlternateScreen,
     disable_raw_mode, enable_raw_mode,
@@ -45,7 +48,14 @@ pub struct Options {
     pub fps: f64,
     /// Canvas and chart marker.
     pub(crate) marker: Marker,
+    /// Capture the mouse (clicks, drags, wheel); off with `--no-mouse`, which leaves the
+    /// terminal's own selection and scrolling alone.
+    pub mouse: bool,
 }
+
+/// Whether the lab turned mouse capture on: every restore path turns it off again (and
+/// writes nothing about the mouse when it was never on).
+pub(crate) static MOUSE_CAPTURED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// The `--marker` names.
 pub(crate) const MARKERS: &[(&str, Marker)] =
@@ -75,9 +85,13 @@ pub fn load_app(config: Option<&Path>, sets: &[String]) -> crate::Result<App> {
     }
 }
 
-/// Puts the terminal back: raw mode off, main screen, cursor shown. Safe to call twice.
+/// Puts the terminal back: mouse capture off, raw mode off, main screen, cursor shown. Safe
+/// to call twice.
 fn restore_terminal() {
     let mut out = io::stdout();
+    if MOUSE_CAPTURED.swap(false, std::sync::atomic::Ordering::SeqCst) {
+        let _ = execute!(out, DisableMouseCapture);
+    }
     let _ = execute!(out, EndSynchronizedUpdate, LeaveAlternateScreen, cursor::Show);
     let _ = disable_raw_mode();
 }
@@ -126,7 +140,10 @@ pub fn run(options: &Options) -> i32 {
         restore_terminal();
         previous_hook(info);
     }));
-    if let Err(e) = enable_raw_mode().and_then(|()| execute!(io::stdout(), EnterAlternateScreen, cursor::Hide)) {
+    if let Err(e) = enable_raw_mode()
+        .and_then(|()| execute!(io::stdout(), EnterAlternateScreen, cursor::Hide))
+        .and_then(|()| capture_mouse(options.mouse))
+    {
         restore_terminal();
         eprintln!("gaitlab: cannot set up the terminal: {e}");
         return 1;
@@ -154,6 +171,15 @@ pub fn run(options: &Options) -> i32 {
     }
 }
 
+/// Turns mouse capture on (noted first, so that a failure half-way is still undone).
+fn capture_mouse(on: bool) -> io::Result<()> {
+    if !on {
+        return Ok(());
+    }
+    MOUSE_CAPTURED.store(true, std::sync::atomic::Ordering::SeqCst);
+    execute!(io::stdout(), EnableMouseCapture)
+}
+
 fn draw<B: Backend + Write>(terminal: &mut Terminal<B>, app: &App, marker: Marker) -> io::Result<()>
 where
     B::Error: Into<io::Error>,
@@ -162,6 +188,21 @@ where
     terminal.draw(|f| ui::draw(f, app, marker)).map_err(Into::into)?;
     execute!(terminal.backend_mut(), EndSynchronizedUpdate)?;
     Write::flush(terminal.backend_mut())
+}
+
+/// One input event through the lab; returns whether the screen must be redrawn.
+fn handle_event<B: Backend>(app: &mut App, terminal: &mut Terminal<B>, event: Event) -> io::Result<bool>
+where
+    B::Error: Into<io::Error>,
+{
+    match event {
+        Event::Key(key) if key.kind != KeyEventKind::Release => effects::step(app, app::Msg::Key(key)),
+        // Plain moves (any-event tracking reports them) change nothing: no redraw.
+        Event::Mouse(mouse) if mouse.kind != MouseEventKind::Moved => effects::step(app, app::Msg::Mouse(mouse)),
+        Event::Resize(..) => terminal.autoresize().map_err(Into::into)?,
+        _ => return Ok(false),
+    }
+    Ok(true)
 }
 
 fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Result<()> {
@@ -205,17 +246,7 @@ fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Res
         if event::poll(timeout)? {
             // Coalesce: handle everything queued before drawing once.
             loop {
-                match event::read()? {
-                    Event::Key(key) if key.kind != KeyEventKind::Release => {
-                        effects::step(app, app::Msg::Key(key));
-                        dirty = true;
-                    }
-                    Event::Resize(..) => {
-                        terminal.autoresize()?;
-                        dirty = true;
-                    }
-                    _ => {}
-                }
+                dirty |= handle_event(app, &mut terminal, event::read()?)?;
                 if !event::poll(Duration::ZERO)? {
                     break;
                 }

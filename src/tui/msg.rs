@@ -3,7 +3,7 @@
 use super::export::Export;
 use super::text_input::TextInput;
 use crate::model::params::WalkParams;
-use ratatui::crossterm::event::KeyEvent;
+use ratatui::crossterm::event::{KeyEvent, MouseEvent};
 use std::path::PathBuf;
 
 /// What happens to the lab: a key, or the outcome of an effect it asked for.
@@ -11,6 +11,8 @@ use std::path::PathBuf;
 pub enum Msg {
     /// A key press.
     Key(KeyEvent),
+    /// A mouse press, drag, release or wheel turn (read against the last frame drawn).
+    Mouse(MouseEvent),
     /// A save asked for by [`Effect::Save`] ended.
     Saved {
         /// Where.

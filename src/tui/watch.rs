@@ -34,6 +34,9 @@ pub(crate) const GRACE_MS: u64 = 500;
 
 /// The bytes that put the terminal back: synchronized update off, main screen, cursor shown.
 const RESTORE: &[u8] = b"\x1b[?2026l\x1b[?1049l\x1b[?25h";
+/// Mouse capture off, as crossterm's `DisableMouseCapture` writes it (every mode its
+/// `EnableMouseCapture` turns on), for a lab started with the mouse.
+const MOUSE_OFF: &[u8] = b"\x1b[?1006l\x1b[?1015l\x1b[?1003l\x1b[?1002l\x1b[?1000l";
 
 struct Shared {
     /// The recovery file and the text to put in it; `None` text: nothing unsaved.
@@ -90,6 +93,10 @@ fn restore_raw() {
     let _ = std::thread::Builder::new().name("gaitlab-restore".into()).spawn(move || {
         let _ = ratatui::crossterm::terminal::disable_raw_mode();
         // SAFETY: writing a static buffer to fd 1; a failure (dead tty) is ignored.
+        if super::MOUSE_CAPTURED.load(Ordering::SeqCst) {
+            // SAFETY: as below.
+            unsafe { libc::write(1, MOUSE_OFF.as_ptr().cast(), MOUSE_OFF.len()) };
+        }
         unsafe { libc::write(1, RESTORE.as_ptr().cast(), RESTORE.len()) };
         flag.store(true, Ordering::SeqCst);
     });

@@ -6,6 +6,7 @@ use crate::model::gait_curves::CurveName;
 use crate::model::walk::leg::LegPhase;
 use crate::tui::app::{App, CurveView};
 use crate::tui::keys::Action;
+use crate::tui::mouse::ChartHit;
 use crate::tui::ui::walk::{LEFT, RIGHT};
 use ratatui::prelude::*;
 use ratatui::symbols::Marker;
@@ -130,9 +131,26 @@ fn label(x: f64) -> Span<'static> {
     Span::raw(if x.abs() >= 10.0 { format!("{x:.0}") } else { format!("{x:.2}") })
 }
 
+/// A chart whose point is being edited shows the design curve's points, which are the ones
+/// edited (a swing chart otherwise shows this step's adapted curve's), and the edited shape
+/// at once, even paused (a cycle curve's live line only takes it as the walk plays on).
+/// Returns the selected point, to be drawn over the others.
+fn show_edited(app: &App, view: CurveView, data: &mut CurveData) -> Option<Vec<(f64, f64)>> {
+    let p = app.point.filter(|p| p.view == view)?;
+    let map = app.edit_map(view);
+    data.control = app.design_points(map.name).iter().map(|&(x, y)| (x, map.shown(y))).collect();
+    let design = sample(app.walker.design_curves().get(map.name), map.a, map.b);
+    match data.lines.iter_mut().find(|l| l.0 == "design") {
+        Some(line) => line.2 = design,
+        None => data.lines.push(("design".into(), Color::DarkGray, design)),
+    }
+    Some(data.control.get(p.index).copied().map_or_else(Vec::new, |q| vec![q]))
+}
+
 /// Draws one curve chart.
 pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, marker: Marker) {
-    let data = curve_data(app, view);
+    let mut data = curve_data(app, view);
+    let selected = show_edited(app, view, &mut data);
     let y =
         bounds(data.lines.iter().flat_map(|(_, _, p)| p.iter().map(|q| q.1)).chain(data.control.iter().map(|q| q.1)));
     let x = data
@@ -164,6 +182,15 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
             .style(Style::new().fg(Color::Yellow))
             .data(&data.control),
     );
+    if let Some(selected) = &selected {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Block)
+                .graph_type(GraphType::Scatter)
+                .style(Style::new().fg(Color::LightRed))
+                .data(selected),
+        );
+    }
     if !cursor.is_empty() {
         datasets.push(
             Dataset::default()
@@ -181,13 +208,28 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
         Line::raw(format!(" {} ", data.title)),
         Some(Line::raw(format!(" x: {} ", data.x_label))),
     );
+    let (x_labels, y_labels) = ([label(x[0]), label(x[1])], [label(y[0]), label(y[1])]);
+    let graph = graph_area(inner, &x_labels, &y_labels);
+    app.hits.borrow_mut().charts.push(ChartHit { view, graph, x, y });
     let chart = Chart::new(datasets)
-        .x_axis(Axis::default().bounds(x).labels([label(x[0]), label(x[1])]))
-        .y_axis(Axis::default().bounds(y).labels([label(y[0]), label(y[1])]))
+        .x_axis(Axis::default().bounds(x).labels(x_labels))
+        .y_axis(Axis::default().bounds(y).labels(y_labels))
         .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
         // The legend only where it covers little of the chart: in small charts it hid the data.
         .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
     f.render_widget(chart, inner);
+}
+
+/// The cells a `Chart` with these labels (and no axis titles) plots its data in, as
+/// ratatui 0.30 lays it out: the x labels' row and the x axis at the bottom, the y labels
+/// (at most a third of the width) and the y axis at the left.
+fn graph_area(inner: Rect, x_labels: &[Span<'_>; 2], y_labels: &[Span<'_>; 2]) -> Rect {
+    if inner.height <= 2 || inner.width < 3 {
+        return Rect { x: inner.x, y: inner.y, width: 0, height: 0 };
+    }
+    let y_width = y_labels.iter().map(Span::width).max().unwrap_or(0) as u16;
+    let left = y_width.max((x_labels[0].width() as u16).saturating_sub(1)).min(inner.width / 3) + 1;
+    Rect { x: inner.x + left, y: inner.y, width: inner.width.saturating_sub(left), height: inner.height - 2 }
 }
 
 /// The curve panel: one chart, or a grid starting at the selected one — four where the

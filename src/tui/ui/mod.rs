@@ -51,6 +51,7 @@ pub fn panel(f: &mut Frame, area: Rect, title: Line<'_>, bottom: Option<Line<'_>
 /// Draws the whole screen.
 pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
     let area = f.area();
+    *app.hits.borrow_mut() = super::mouse::Hits::default();
     if area.width < MIN.0 || area.height < MIN.1 {
         // Below this the panels cannot show a parameter's value or the help's keys: say so
         // instead of drawing a broken screen (keys still work: q quits, the walk goes on).
@@ -71,8 +72,13 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
             Layout::vertical([Constraint::Percentage(58), Constraint::Percentage(42)]).areas(left);
         walk::draw(f, walk_area, app, marker);
         curves::draw_joints(f, joints, app, marker);
-        let [curve_area, optimiser] =
-            Layout::vertical([Constraint::Percentage(55), Constraint::Percentage(45)]).areas(middle);
+        app.hits.borrow_mut().panels.extend([
+            (joints, Panel::Joints),
+            (curve_area_of(middle), Panel::Curves),
+            (optimiser_area_of(middle), Panel::Optimiser),
+            (right, Panel::Editor),
+        ]);
+        let (curve_area, optimiser) = (curve_area_of(middle), optimiser_area_of(middle));
         curves::draw_curves(f, curve_area, app, marker);
         panels::draw_optimiser(f, optimiser, app, marker);
         panels::draw_editor(f, right, app);
@@ -89,6 +95,7 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
                 .divider("|"),
             tabs,
         );
+        record_tabs(app, tabs, panel);
         match app.panel {
             Panel::Editor => panels::draw_editor(f, panel, app),
             Panel::Curves => curves::draw_curves(f, panel, app, marker),
@@ -98,4 +105,25 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
     }
     panels::draw_status(f, status, app);
     panels::draw_overlay(f, area, app);
+}
+
+fn curve_area_of(middle: Rect) -> Rect {
+    Layout::vertical([Constraint::Percentage(55), Constraint::Percentage(45)]).areas::<2>(middle)[0]
+}
+
+fn optimiser_area_of(middle: Rect) -> Rect {
+    Layout::vertical([Constraint::Percentage(55), Constraint::Percentage(45)]).areas::<2>(middle)[1]
+}
+
+/// Where each tab's title is (as `Tabs` lays them out: a space either side, `|` between),
+/// and the panel under them, for the mouse.
+fn record_tabs(app: &App, tabs: Rect, panel: Rect) {
+    let mut hits = app.hits.borrow_mut();
+    let mut x = tabs.x;
+    for p in Panel::ALL {
+        let width = p.title().chars().count() as u16 + 2;
+        hits.tabs.push((Rect { x, y: tabs.y, width, height: 1 }.intersection(tabs), p));
+        x += width + 1;
+    }
+    hits.panels.push((panel, app.panel));
 }

@@ -56,6 +56,7 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
                 put(buf, x, y, &format!("[{group}]"), end, Style::new().fg(Color::Yellow).bold());
             }
             Some(i) => {
+                app.hits.borrow_mut().rows.push((Rect { x: list_area.x, y, width: list_area.width, height: 1 }, *i));
                 let spec = &PARAMS[*i];
                 let now = (spec.get)(&app.params);
                 let mark = if now == (spec.get)(saved) { " " } else { "*" };
@@ -258,7 +259,7 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
 pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     let saved = if app.is_modified() {
         Span::styled(
-            format!(" modified ({}) ", app.changed_keys().len()),
+            format!(" modified ({}) ", app.unsaved_keys().len()),
             Style::new().fg(Color::Black).bg(Color::LightRed),
         )
     } else {
@@ -363,7 +364,7 @@ pub(crate) fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
         }
         Overlay::ConfirmQuit => {
             let lines = vec![
-                Line::raw(format!("{} edited key(s) are not saved.", app.changed_keys().len())),
+                Line::raw(format!("{} edited key(s) are not saved.", app.unsaved_keys().len())),
                 Line::styled("s: save and quit   y: quit anyway   esc: stay", Style::new().fg(Color::Yellow)),
             ];
             dialog(f, centered(area, 52, 5), " Quit? ", lines, false);

@@ -1,0 +1,46 @@
+//! What the view keys do: side or frontal view, the curve shown, the grid, the norms band,
+//! the panel on small screens.
+
+use super::app::{App, CurveView, Panel, View};
+use super::keys::Action;
+
+impl App {
+    /// What to show: the view, the curve chart, the grid, the norms band, the panel.
+    pub(super) fn show(&mut self, action: Action) {
+        match action {
+            Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
+            Action::NextCurve | Action::PrevCurve => {
+                let n = CurveView::ALL.len();
+                self.curve = (self.curve + if action == Action::NextCurve { 1 } else { n - 1 }) % n;
+                // The point keys follow the chart shown.
+                self.point = None;
+            }
+            Action::ToggleGrid => self.toggle_grid(),
+            Action::ToggleNorms => self.toggle_norms(),
+            _ => {
+                let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
+                self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
+            }
+        }
+    }
+
+    /// One curve or a grid of them; on narrow screens the curves share a tab with the other
+    /// panels, so a grid switches to it.
+    fn toggle_grid(&mut self) {
+        self.grid = !self.grid;
+        if self.grid {
+            self.panel = Panel::Curves;
+        }
+        self.message = Some(if self.grid { "curves in a grid (c/C: next/previous)" } else { "one curve" }.into());
+    }
+
+    /// The norms band on or off; on narrow screens the joint traces share a tab with the
+    /// other panels, so turning it on switches to them (else the key would look dead).
+    fn toggle_norms(&mut self) {
+        self.norms = !self.norms;
+        if self.norms {
+            self.panel = Panel::Joints;
+        }
+        self.message = Some(if self.norms { "adult norms band on" } else { "adult norms band off" }.into());
+    }
+}
