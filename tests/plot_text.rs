@@ -281,3 +281,32 @@ fn the_text_box_estimate_finds_overlaps_and_passes_neighbours() {
     let off = text_boxes(&svg(&[text(200, 5, "middle", "-0.5ex", 27.0, "Title")]));
     assert_eq!(collisions(&off, (400.0, 300.0)).len(), 1);
 }
+
+/// `gaitlab figures`' SVGs pass the same checks: no text over text or off the image, every
+/// axis's tick labels distinct.
+#[test]
+fn the_thesis_figures_read_cleanly() {
+    let dir = temp("figures");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+        .args(["figures", "--out", dir.to_str().unwrap()])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut problems = Vec::new();
+    let mut count = 0;
+    for path in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
+        if path.extension().is_none_or(|e| e != "svg") {
+            continue;
+        }
+        count += 1;
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let boxes = text_boxes(&svg);
+        let file = path.file_name().unwrap().to_string_lossy().into_owned();
+        let found = collisions(&boxes, (1600.0, 1000.0));
+        problems.extend(found.into_iter().chain(repeated_ticks(&boxes)).map(|p| format!("{file}: {p}")));
+    }
+    assert_eq!(count, 5);
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    std::fs::remove_dir_all(dir).unwrap();
+}

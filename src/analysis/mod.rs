@@ -11,6 +11,7 @@
 //! - **cycle**: heel strike to heel strike of the right leg; the first cycle is start-up.
 
 pub mod events;
+pub mod frame_cost;
 pub mod ik;
 pub mod ik_tables;
 pub mod recording;

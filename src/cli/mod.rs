@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 
 mod common;
 mod compare;
+mod figures;
 mod fit;
 mod ik;
 mod optimise;
@@ -212,6 +213,23 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
+    /// Regenerate the seed thesis's figures 6.2, 6.6, 6.8, 6.15, 6.17 (PNG, SVG, CSV) and table 6.1 (each part of a frame, timed on this machine) into a folder
+    Figures {
+        /// Config file [default: the embedded default]
+        config: Option<PathBuf>,
+        /// The folder (`help` spelled out: rustdoc would read `<config stem>` as an HTML tag)
+        #[arg(
+            long,
+            help = "Folder [default: reports/figures, or reports/<config stem>-figures with a CONFIG]; a previous figures folder there is replaced, any other folder is refused"
+        )]
+        out: Option<PathBuf>,
+        /// Replace a previous figures folder even if it holds files `figures` does not write
+        #[arg(long)]
+        force: bool,
+        /// Override a key: --set terrain.rise_m=0.2 (repeatable)
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        sets: Vec<String>,
+    },
     /// List the presets: name, then a short description
     Presets,
     /// Print a complete, commented config
@@ -289,6 +307,10 @@ pub fn run(cli: Cli) -> u8 {
         Some(Command::Compare { config, reference, json, sets }) => {
             ("compare", compare::run(&config, reference.as_deref(), json, &sets))
         }
+        Some(Command::Figures { config, out, force, sets }) => (
+            "figures",
+            figures::run(&figures::Args { config: config.as_deref(), out: out.as_deref(), force, sets: &sets }),
+        ),
         Some(Command::Presets) => {
             for (name, text) in presets::PRESETS {
                 println!("{name:<12} {}", presets::description(text));

@@ -1,7 +1,8 @@
 //! Where a report folder goes: built whole under a temp name, then swapped into place.
 //!
 //! gaitlab replaces only what it wrote. An existing folder is replaced when it is empty or
-//! is a gaitlab report (it holds `summary.json` and nothing but the files a report writes);
+//! is a gaitlab report (it holds `summary.json`, or a figures folder `figures.md`, and
+//! nothing but the files it writes);
 //! a report that also holds files of the user's is replaced only with `--force`; any other
 //! folder, and anything that is not a folder, is refused before the walk is run.
 
@@ -45,6 +46,12 @@ fn written_by_report(rel: &Path, files: &[&str]) -> bool {
         && rel.components().count() == 2
 }
 
+/// The file that marks a folder as one gaitlab wrote: a report's `summary.json`, or
+/// `figures.md` for `gaitlab figures`' folder (whose `files` list it and no summary).
+fn marker<'a>(files: &[&'a str]) -> &'a str {
+    if files.contains(&"figures.md") && !files.contains(&"summary.json") { "figures.md" } else { "summary.json" }
+}
+
 fn survey(dir: &Path, files: &[&str]) -> io::Result<Found> {
     let mut others = Vec::new();
     let mut any = false;
@@ -55,7 +62,7 @@ fn survey(dir: &Path, files: &[&str]) -> io::Result<Found> {
             let entry = entry?;
             any = true;
             let child = rel.join(entry.file_name());
-            if child == Path::new("summary.json") {
+            if child == Path::new(marker(files)) {
                 has_summary = true;
             }
             if !written_by_report(&child, files) {

@@ -4,6 +4,7 @@
 //! the end, so an interrupted run never leaves a folder that looks complete.
 
 mod against;
+pub mod figures;
 pub mod metrics;
 pub mod plots;
 
@@ -299,7 +300,7 @@ fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)]) -> String
             String::new()
         } else {
             format!(
-                "Compared with {} (same cycles and frame rate); the plots overlay their pelvis curves and joint angles.\n\n",
+                "Compared with {} (same cycles and frame rate); the plots overlay their pelvis curves, swing heel heights and joint angles.\n\n",
                 others.iter().map(|(n, _)| format!("`{n}`")).collect::<Vec<_>>().join(", ")
             )
         }

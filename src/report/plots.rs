@@ -13,15 +13,17 @@
 mod chrono;
 mod common;
 mod cycle;
-mod data;
+pub(crate) mod data;
 mod ik;
 mod optimisation;
 mod overlay;
 mod stick_figure;
 mod swing;
+mod thesis;
 
 pub use common::SIZE;
 pub(crate) use overlay::Overlay;
+pub(crate) use thesis::{Band, Figure, Line, Panel, write_figure};
 
 use crate::analysis::Run;
 use crate::analysis::ik::{IkTarget, SolverRun};
@@ -67,13 +69,14 @@ pub struct Walk<'a> {
 }
 
 /// Writes every plot of [`PLOTS`] into `dir` (which must exist). The first walk is the
-/// report's; others (from `--compare`) are overlaid on the pelvis and joint-angle plots.
+/// report's; others (from `--compare`) are overlaid on the pelvis, swing-foot and joint-angle
+/// plots.
 pub fn write_plots(dir: &Path, walks: &[Walk<'_>]) -> Res {
     register_font();
     let all: Vec<(String, Data<'_>)> = walks.iter().map(|w| (w.name.clone(), Data::new(w.run))).collect();
     let d = &all[0].1;
     both!(dir, "pelvis", pelvis, &all);
-    both!(dir, "swing_foot", swing_foot, d);
+    both!(dir, "swing_foot", swing_foot, &all);
     both!(dir, "ankle", ankle, d);
     both!(dir, "joints", joints, &all);
     both!(dir, "stick_figure", stick_figure, d);

@@ -21,6 +21,7 @@ mod planner;
 pub mod pose;
 mod start;
 pub mod step_problem;
+pub mod timing;
 pub mod upper;
 
 pub use gait::{
@@ -43,6 +44,7 @@ use pose::build_pose;
 use start::standing_start;
 use std::fmt;
 use step_problem::{StepProblem, StepRecord};
+use timing::{FramePart, FrameTimer};
 use upper::{ArmHang, UpperBody};
 
 /// Largest phase advance of one update (cycles) [6.3.3].
@@ -114,6 +116,7 @@ pub struct Walker {
     leg_solvers: [LegSolver; 2],
     last_ik: [IkAnswer; 2],
     clock: Option<fn() -> std::time::Instant>,
+    timer: Option<Box<FrameTimer>>,
     pelvis: PelvisPose,
     arm_hang: ArmHang,
     upper: UpperBody,
@@ -184,6 +187,7 @@ impl Walker {
             leg_solvers,
             last_ik: [IkAnswer::default(); 2],
             clock: None,
+            timer: None,
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
             upper: UpperBody::default(),
@@ -251,11 +255,14 @@ impl Walker {
 
     /// Evaluates everything at the current phase and builds the pose.
     fn evaluate_now(&mut self) {
+        self.lap(FramePart::Bookkeeping);
         let pelvis = self.pelvis_at(self.phase);
+        self.lap(FramePart::Curves);
         for side in Side::BOTH {
+            let hip = pelvis.hip(side.sign());
+            let target = self.leg_target(side, self.phase, hip);
+            self.lap(FramePart::LegTargets);
             let pose = if self.gait.r.ik.solver.is_iterative() {
-                let hip = pelvis.hip(side.sign());
-                let target = self.leg_target(side, self.phase, hip);
                 let answer = self.leg_solvers[side.index()].solve(&ik_question(hip, target, side));
                 self.last_ik[side.index()] = answer;
                 let axis = (answer.ankle - hip).normalize_or(DVec3::NEG_Y);
@@ -264,7 +271,7 @@ impl Walker {
                     TwoBoneSolution { middle: answer.knee, end: answer.ankle, swivel, reached: answer.reached };
                 leg_pose(&self.gait.r, hip, target, &solved)
             } else {
-                let pose = self.evaluate_leg(side, self.phase, &pelvis);
+                let pose = solve_leg(&self.gait.r, hip, target);
                 self.last_ik[side.index()] = IkAnswer::exact(pose.knee, pose.ankle, pose.reached, pose.target.ankle);
                 pose
             };
@@ -272,15 +279,48 @@ impl Walker {
                 self.reach_failures += 1;
             }
             self.legs[side.index()].pose = pose;
+            self.lap(FramePart::LegIk);
         }
         self.pelvis = pelvis;
         let p_right = self.phase.rem_euclid(1.0);
         let arm_phase = [p_right, (self.phase - 0.5).rem_euclid(1.0)];
         let shoulder = [self.gait.live.shoulder[0].eval(arm_phase[0]), self.gait.live.shoulder[1].eval(arm_phase[1])];
         let elbow = [self.gait.live.elbow[0].eval(arm_phase[0]), self.gait.live.elbow[1].eval(arm_phase[1])];
-        self.upper = UpperBody::solve(&self.gait.r, &self.arm_hang, &pelvis, shoulder, elbow);
+        self.lap(FramePart::Curves);
+        let bend = upper::trunk_bend(self.gait.r.dims.trunk_segments(), pelvis.obliquity);
+        self.lap(FramePart::Spine);
+        self.upper = UpperBody::solve_bent(&self.gait.r, &self.arm_hang, &pelvis, bend, shoulder, elbow);
+        self.lap(FramePart::Arms);
         let legs = [&self.legs[0].pose, &self.legs[1].pose];
         build_pose(&self.gait.r.dims, &self.pelvis, legs, &self.upper, &mut self.pose);
+        self.lap(FramePart::Pose);
+    }
+
+    /// Gives the walk a frame timer (or takes it away): each part of every later update is
+    /// charged to it (see [`timing`]).
+    pub fn set_frame_timer(&mut self, timer: Option<FrameTimer>) {
+        self.timer = timer.map(Box::new);
+    }
+
+    /// The frame timer, if one was given.
+    #[must_use]
+    pub fn frame_timer(&self) -> Option<&FrameTimer> {
+        self.timer.as_deref()
+    }
+
+    /// Restarts the timer's chain without charging any part (see [`FrameTimer::restart`]).
+    pub fn restart_timer(&mut self) {
+        if let Some(timer) = self.timer.as_deref_mut() {
+            timer.restart();
+        }
+    }
+
+    /// Charges the time since the last lap to `part`, when the walk is timed.
+    #[inline]
+    pub fn lap(&mut self, part: FramePart) {
+        if let Some(timer) = self.timer.as_deref_mut() {
+            timer.lap(part);
+        }
     }
 
     /// The pelvis at master phase `phase` under the current plan.

@@ -18,6 +18,7 @@ use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, 
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
+use crate::model::walk::timing::FramePart;
 use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, SWING_SAMPLES, StepPlan, Walker};
 use glam::DVec3;
 
@@ -36,6 +37,7 @@ impl Walker {
     /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
     /// swing [6.3.2].
     pub(super) fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
+        self.lap(FramePart::Bookkeeping);
         let i = side.index();
         let other = self.legs[side.other().index()].footfall;
         // Footfall: a step on from the previous footfall's nominal place, settled on the ground.
@@ -83,7 +85,9 @@ impl Walker {
         let mut guard_drop = self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
         let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
         let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
+        self.lap(FramePart::SwingPlanning);
         let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
+        self.lap(FramePart::PelvisChoice);
         if (record.chosen.x, record.chosen.y) != (ds.x, ds.y) {
             // The chosen pelvis sets the shank at heel strike and with it the angle the foot
             // lands at, which the guard's loading response starts from.
@@ -108,6 +112,7 @@ impl Walker {
         });
         self.footfalls.push(to);
         self.legs[i].swing = Some(plan);
+        self.lap(FramePart::SwingPlanning);
     }
 
     /// The step's ankle curve and the foot–ground angle it strikes `to` at with the hip at

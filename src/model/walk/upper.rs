@@ -126,8 +126,22 @@ impl UpperBody {
     /// hanging pose, abducted by the spread.
     #[must_use]
     pub fn solve(r: &Resolved, hang: &ArmHang, pelvis: &PelvisPose, shoulder: [f64; 2], elbow: [f64; 2]) -> Self {
+        let alpha = trunk_bend(r.dims.trunk_segments(), pelvis.obliquity);
+        Self::solve_bent(r, hang, pelvis, alpha, shoulder, elbow)
+    }
+
+    /// [`UpperBody::solve`] with the trunk bend `alpha` (rad, from [`trunk_bend`]) already
+    /// solved: the walk times the spine's solve apart from the rest (thesis table 6.1).
+    #[must_use]
+    pub fn solve_bent(
+        r: &Resolved,
+        hang: &ArmHang,
+        pelvis: &PelvisPose,
+        alpha: f64,
+        shoulder: [f64; 2],
+        elbow: [f64; 2],
+    ) -> Self {
         let theta = pelvis.obliquity;
-        let alpha = trunk_bend(r.dims.trunk_segments(), theta);
         let yaw = pelvis.rotation_angle;
         let thorax = -r.counter_rotation * yaw;
         let twist = thorax - yaw;

@@ -6,21 +6,21 @@ use crate::analysis::events as gait_events;
 use crate::model::walk::frame::Frame;
 
 /// A quantity over the gait cycle: mean, min and max at each percent.
-pub(super) struct Cycle {
+pub(crate) struct Cycle {
     /// Mean at each percent.
-    pub(super) mean: Vec<(f64, f64)>,
+    pub(crate) mean: Vec<(f64, f64)>,
     /// Min along the cycle, then max back: a closed polygon.
-    pub(super) band: Vec<(f64, f64)>,
+    pub(crate) band: Vec<(f64, f64)>,
 }
 
 /// Everything the plots need, prepared once.
-pub(super) struct Data<'a> {
+pub(crate) struct Data<'a> {
     /// The walk.
     pub(super) run: &'a Run,
     /// Heel strikes per side (frame indices), steady ones only (start-up cycle dropped).
     pub(super) strikes: [Vec<usize>; 2],
     /// Mean % of the right cycle: right toe-off, left heel strike, left toe-off.
-    pub(super) events: Vec<(&'static str, f64)>,
+    pub(crate) events: Vec<(&'static str, f64)>,
 }
 
 /// Steady heel strikes of `side`: the start-up cycle's first strike dropped.
@@ -30,7 +30,7 @@ fn strikes_of(frames: &[Frame], side: usize) -> Vec<usize> {
 
 impl<'a> Data<'a> {
     /// Prepares `run`.
-    pub(super) fn new(run: &'a Run) -> Data<'a> {
+    pub(crate) fn new(run: &'a Run) -> Data<'a> {
         let frames = &run.frames;
         let strikes = [strikes_of(frames, 0), strikes_of(frames, 1)];
         let right = &strikes[0];
@@ -54,7 +54,7 @@ impl<'a> Data<'a> {
     }
 
     /// `value` per frame, normalised to each of `side`'s steady cycles.
-    pub(super) fn cycle(&self, side: usize, value: &dyn Fn(usize) -> f64) -> Cycle {
+    pub(crate) fn cycle(&self, side: usize, value: &dyn Fn(usize) -> f64) -> Cycle {
         let frames = &self.run.frames;
         let mut samples: Vec<Vec<f64>> = vec![Vec::new(); 101];
         for w in self.strikes[side].windows(2) {

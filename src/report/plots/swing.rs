@@ -1,24 +1,31 @@
 //! Plots of the swing's curves over their own span: each design curve, and each step's
 //! curve as the planner adapted it to the terrain.
 
-use super::common::{DESIGN, FONT, LEGEND_FONT_PX, RIGHT, Res, err, legend_corner, percent_chart, y_range};
+use super::common::{DESIGN, FONT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_corner, percent_chart, y_range};
 use super::data::Data;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// A chart of curves over 0–100 % of their own span.
+/// A curve sampled over its span.
+type Sampled = Vec<(f64, f64)>;
+
+/// Each step's adapted curves of one walk: legend name, colour, curves.
+type Steps<'a> = (String, RGBColor, &'a [Sampled]);
+
+/// A chart of curves over 0–100 % of their own span: the design curve over each walk's
+/// steps (one walk's in red; compared walks' in their palette colours, named).
 fn curve_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     x_desc: &str,
     y_desc: &str,
     design: &[(f64, f64)],
-    steps: &[Vec<(f64, f64)>],
+    walks: &[Steps<'_>],
 ) -> Res {
     let mut all: Vec<&[(f64, f64)]> = vec![design];
-    all.extend(steps.iter().map(Vec::as_slice));
+    all.extend(walks.iter().flat_map(|(_, _, steps)| steps.iter().map(Vec::as_slice)));
     let y = y_range(&all);
     let mut chart = percent_chart(area, title, y.clone())?;
     chart
@@ -31,12 +38,17 @@ fn curve_chart<DB: DrawingBackend>(
         .axis_desc_style((FONT, 22))
         .draw()
         .map_err(err)?;
-    for (k, s) in steps.iter().enumerate() {
-        let series = chart.draw_series(LineSeries::new(s.clone(), RIGHT.mix(0.45).stroke_width(2))).map_err(err)?;
-        if k == 0 {
-            series
-                .label("adapted, each step")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RIGHT.stroke_width(2)));
+    let mut labels: Vec<&str> = Vec::new();
+    for (name, color, steps) in walks {
+        let color = *color;
+        for (k, s) in steps.iter().enumerate() {
+            let series = chart.draw_series(LineSeries::new(s.clone(), color.mix(0.45).stroke_width(2))).map_err(err)?;
+            if k == 0 {
+                series
+                    .label(name.as_str())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2)));
+                labels.push(name);
+            }
         }
     }
     chart
@@ -44,8 +56,8 @@ fn curve_chart<DB: DrawingBackend>(
         .map_err(err)?
         .label("design")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(3)));
-    let labels: &[&str] = if steps.is_empty() { &["design"] } else { &["adapted, each step", "design"] };
-    let corner = legend_corner(chart.plotting_area().dim_in_pixel(), 0.0..100.0, y, labels, &all);
+    labels.push("design");
+    let corner = legend_corner(chart.plotting_area().dim_in_pixel(), 0.0..100.0, y, &labels, &all);
     chart
         .configure_series_labels()
         .label_font((FONT, LEGEND_FONT_PX))
@@ -57,20 +69,41 @@ fn curve_chart<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Each walk's steps as one legend entry: a lone walk's in red as "adapted, each step", with
+/// `--compare` each walk's in its palette colour under its name.
+fn steps_of<'a>(walks: &[(String, &'a [Sampled])]) -> Vec<Steps<'a>> {
+    if let [(_, steps)] = walks {
+        return vec![("adapted, each step".to_string(), RIGHT, steps)];
+    }
+    walks
+        .iter()
+        .enumerate()
+        .map(|(k, (name, steps))| (format!("{name}, each step"), PALETTE[k % PALETTE.len()], *steps))
+        .collect()
+}
+
 /// A curve at each percent of its span, times `scale`.
 fn sample(curve: &Curve, scale: f64) -> Vec<(f64, f64)> {
     (0..=100).map(|p| (p as f64, curve.eval(p as f64 / 100.0) * scale)).collect()
 }
 
-/// The swing foot's forward, lateral and heel-height curves.
-pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
+/// The swing foot's forward, lateral and heel-height curves; with `--compare` every walk's
+/// steps overlaid on the heel height.
+pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root
-        .titled("Swing foot: design curves and each step's terrain-adapted heel height", (FONT, 34))
-        .map_err(err)?;
+    let title = if walks.len() == 1 {
+        "Swing foot: design curves and each step's terrain-adapted heel height"
+    } else {
+        "Swing foot: design curves and each walk's terrain-adapted heel height, step by step"
+    };
+    let root = root.titled(title, (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 3));
-    let design = d.run.gait.design_curves();
-    let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_heel_height, 100.0)).collect();
+    let design = walks[0].1.run.gait.design_curves();
+    let heights: Vec<(String, Vec<Sampled>)> = walks
+        .iter()
+        .map(|(name, d)| (name.clone(), d.run.step_plans.iter().map(|p| sample(&p.swing_heel_height, 100.0)).collect()))
+        .collect();
+    let named: Vec<(String, &[Sampled])> = heights.iter().map(|(n, s)| (n.clone(), s.as_slice())).collect();
     curve_chart(
         &areas[0],
         "forward progress",
@@ -93,7 +126,7 @@ pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &D
         "% of swing",
         "above toe-off ground (cm)",
         &sample(design.get(CurveName::SwingHeelHeight), 100.0),
-        &steps,
+        &steps_of(&named),
     )?;
     root.present().map_err(err)
 }
@@ -111,7 +144,7 @@ pub(super) fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'
         "% of swing",
         "toe up + (deg)",
         &sample(design.get(CurveName::SwingAnkle), 1.0),
-        &steps,
+        &steps_of(&[(String::new(), &steps)]),
     )?;
     curve_chart(
         &areas[1],
