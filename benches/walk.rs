@@ -101,6 +101,53 @@ fn toe_off_planning(c: &mut Criterion) {
     }
 }
 
+/// Walks `w` on in steps of `step` until one step short of `side`'s next toe-off.
+fn short_of_toe_off(mut w: Walker, side: Side, step: f64) -> Walker {
+    loop {
+        let mut probe = w.clone();
+        probe.advance(step);
+        if w.leg(side).phase == LegPhase::HeelRise && probe.leg(side).phase == LegPhase::Swing {
+            return w;
+        }
+        w = probe;
+    }
+}
+
+/// The two steps of a stop against a steady one, swing planning alone (the ≤ 100 µs budget's
+/// case) and with the thesis optimiser: the braking step (shortened, the settling set up) and
+/// the closing step (beside the other foot, no double support to choose).
+fn stop_planning(c: &mut Criterion) {
+    for optimiser in [false, true] {
+        let mut params = presets::params("default").unwrap().unwrap();
+        params.optimiser.enabled = optimiser;
+        let label = if optimiser { "with the thesis optimiser" } else { "swing planning alone" };
+        let mut w = Walker::new(&params).unwrap();
+        w.set_cost_fixed_rule(optimiser);
+        let step = 0.001 * w.resolved().cycle_s;
+        for _ in 0..3 {
+            w = short_of_toe_off(w, Side::Right, step);
+            w.advance(step);
+        }
+        let mut braking = short_of_toe_off(w, Side::Right, step);
+        braking.request_stop();
+        let mut after = braking.clone();
+        after.advance(step);
+        let closing = short_of_toe_off(after, Side::Left, step);
+        for (kind, walker) in [("braking", braking), ("closing", closing)] {
+            c.bench_function(&format!("update with toe-off planning of the {kind} step (default, {label})"), |b| {
+                b.iter_batched(
+                    || walker.clone(),
+                    |mut walker| {
+                        walker.advance(step);
+                        walker
+                    },
+                    BatchSize::SmallInput,
+                );
+            });
+        }
+    }
+}
+
 fn joint_table_rows(c: &mut Criterion) {
     let mut w = default_walker();
     let mut line = String::with_capacity(512);
@@ -174,5 +221,5 @@ fn report(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-criterion_group!(benches, frame_update, toe_off_planning, joint_table_rows, optimiser, report);
+criterion_group!(benches, frame_update, toe_off_planning, stop_planning, joint_table_rows, optimiser, report);
 criterion_main!(benches);

@@ -11,6 +11,7 @@ pub mod edit;
 pub mod errors;
 pub mod presets;
 pub mod render;
+pub mod schedule;
 pub mod schema;
 pub mod source;
 
@@ -153,6 +154,8 @@ impl Loader {
                 let value_at = place(value.span().start);
                 if group == "curves" {
                     self.read_curve(name, value, &at, &place);
+                } else if group == "walk" && name == "schedule" {
+                    self.read_schedule(value, &at, &place);
                 } else {
                     self.set_key(&format!("{group}.{name}"), value.get_ref(), &at, &value_at);
                 }

@@ -17,6 +17,7 @@ pub static PRESETS: &[(&str, &str)] = &[
     ("slope_up", include_str!("../../configs/slope_up.toml")),
     ("slope_down", include_str!("../../configs/slope_down.toml")),
     ("rough", include_str!("../../configs/rough.toml")),
+    ("pace", include_str!("../../configs/pace.toml")),
 ];
 
 /// What the default preset is. `configs/default.toml` is `gaitlab init`'s output, which

@@ -4,6 +4,7 @@
 use crate::config::schema::{GROUPS, Kind, PARAMS, Value};
 use crate::model::gait_curves::CurveName;
 use crate::model::params::{Resolved, WalkParams};
+use crate::model::schedule::{PaceAction, PaceEntry, PaceTrigger};
 
 /// A number as TOML writes it: always with a decimal point, at most 4 decimals.
 #[must_use]
@@ -82,6 +83,9 @@ pub fn render(params: &WalkParams, title: &str) -> String {
                 }
             }
         }
+        if *group == "walk" {
+            out.push_str(SCHEDULE_DOC);
+        }
     }
     out.push_str("\n# [curves.<name>] replaces a curve's control points: points = [[x, y], ...], 3n+1 of\n");
     out.push_str("# them, x from 0 to 1 and increasing; cycle curves must end where they start.\n# Curves: ");
@@ -104,5 +108,33 @@ pub fn render(params: &WalkParams, title: &str) -> String {
         out.push_str(&pts.join(", "));
         out.push_str("]\n");
     }
+    for entry in &params.schedule {
+        out.push_str(&schedule_entry(entry));
+    }
     out
+}
+
+/// What `gaitlab init` says of `[[walk.schedule]]` (under `[walk]`).
+const SCHEDULE_DOC: &str = "\
+# [[walk.schedule]] changes the pace while walking; none by default (one steady speed).
+# Each entry: when, time_s (0 to 86400 s) or distance_m (0 to 100000 m, pelvis travel),
+# and what, speed_mps (0.4 to 2 m/s, reached over the next two steps) or stop = true (a
+# braking step, the trailing foot closes beside it, the body settles to standing).
+# Entries fire in file order. Example:
+# [[walk.schedule]]
+# time_s = 4.0
+# speed_mps = 1.6
+";
+
+/// One schedule entry as a `[[walk.schedule]]` table.
+fn schedule_entry(entry: &PaceEntry) -> String {
+    let when = match entry.trigger {
+        PaceTrigger::TimeS(t) => format!("time_s = {}", toml_number(t)),
+        PaceTrigger::DistanceM(d) => format!("distance_m = {}", toml_number(d)),
+    };
+    let what = match entry.action {
+        PaceAction::Speed(v) => format!("speed_mps = {}", toml_number(v)),
+        PaceAction::Stop => "stop = true".to_string(),
+    };
+    format!("\n[[walk.schedule]]\n{when}\n{what}\n")
 }

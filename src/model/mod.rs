@@ -7,6 +7,7 @@
 //! - [`body`]: skeleton, segment lengths, poses;
 //! - [`ik`]: the analytic two-bone solver;
 //! - [`params`]: typed parameters and how the high-level knobs derive the rest;
+//! - [`schedule`]: the pace schedule (speed changes and the stop) a walk plays;
 //! - [`walk`]: phases, footfalls, swing planning, pelvis, upper body, frames;
 //! - [`optimise`]: the pelvis-position search at double support;
 //! - [`variants`]: enum variant tables for the name tables strum derives.
@@ -18,6 +19,7 @@ pub mod gait_curves;
 pub mod ik;
 pub mod optimise;
 pub mod params;
+pub mod schedule;
 pub mod search;
 pub mod terrain;
 pub mod variants;

@@ -8,6 +8,7 @@
 use crate::model::body::{BodyDims, Sex};
 use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
+use crate::model::schedule::PaceEntry;
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
 
@@ -323,6 +324,9 @@ pub struct WalkParams {
     pub sim: SimParams,
     /// Control-point overrides by curve name (`[curves.<name>] points = [[x, y], …]`).
     pub curves: BTreeMap<String, Vec<(f64, f64)>>,
+    /// Pace changes and the stop, in file order (`[[walk.schedule]]`); empty: one steady
+    /// speed for ever.
+    pub schedule: Vec<PaceEntry>,
 }
 
 impl Default for WalkParams {
@@ -401,6 +405,7 @@ impl Default for WalkParams {
             },
             sim: SimParams { fps: 60.0, cycles: 10 },
             curves: BTreeMap::new(),
+            schedule: Vec::new(),
         }
     }
 }

@@ -142,12 +142,15 @@ impl Gait {
     pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
         let (x, y) = plan.position(phase, &self.traj);
         let p = phase.rem_euclid(1.0);
-        let z = self.live.lateral.eval(p);
+        // At the walk's end the sway and the rotations fade to standing (zero) with the
+        // settling's weight.
+        let keep = plan.settling().map_or(1.0, |s| 1.0 - s.weight(phase));
+        let z = self.live.lateral.eval(p) * keep;
         PelvisPose::new(
             DVec3::new(x, y, z),
-            self.live.rotation.eval(p),
-            self.live.obliquity.eval(p),
-            self.live.tilt.eval(p),
+            self.live.rotation.eval(p) * keep,
+            self.live.obliquity.eval(p) * keep,
+            self.live.tilt.eval(p) * keep,
             0.5 * self.r.dims.hip_width,
         )
     }
@@ -175,7 +178,7 @@ impl Gait {
                 extra_heel_rise: 0.0,
             },
             LegPhase::HeelRise => {
-                let s = ((q - r.heel_rise) / (r.toe_off - r.heel_rise)).clamp(0.0, 1.0);
+                let s = ((q - r.heel_rise) / (leg.toe_off - r.heel_rise)).clamp(0.0, 1.0);
                 let curve_angle =
                     (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
                 let ankle_at =
@@ -210,7 +213,7 @@ impl Gait {
             }
             LegPhase::Swing => {
                 let plan = leg.swing.as_ref().expect("a swinging leg has a plan");
-                let s = ((q - r.toe_off) / (1.0 - r.toe_off)).clamp(0.0, 1.0);
+                let s = ((q - leg.toe_off) / (1.0 - leg.toe_off)).clamp(0.0, 1.0);
                 swing_target(plan, s, leg.side, r, hip)
             }
         }
@@ -275,6 +278,7 @@ pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Re
             leg.anchor = pose_at_boundary.target.ankle
                 + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
             leg.heel_rise_scale = r.stride_m / HEEL_RISE_DESIGN_STRIDE_M;
+            leg.toe_off = r.toe_off;
             leg.phase = LegPhase::HeelRise;
         }
         LegPhase::HeelRise | LegPhase::Swing => {}

@@ -152,6 +152,10 @@ pub struct LegState {
     pub(crate) strike_angle: f64,
     /// Heel-rise curve scale frozen at the phase's start: stride / 1.8 m.
     pub(crate) heel_rise_scale: f64,
+    /// Cycle phase of this leg's toe-off, frozen when its heel rise starts: its heel rise
+    /// and swing are timed by it, so a pace change (which moves the toe-off with speed) never
+    /// moves a heel rise or a swing under way.
+    pub(crate) toe_off: f64,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
     /// Counts phase changes, so one phase instance can be told from the next.

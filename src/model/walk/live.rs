@@ -16,13 +16,19 @@ impl Walker {
     /// planned per step (footfalls, swing, pelvis keys) from the next toe-off. Body and
     /// terrain cannot change under a walking body: returns false, and the caller restarts.
     pub fn set_params(&mut self, params: &WalkParams) -> Result<bool, ModelError> {
+        self.set_params_at(params, self.phase)
+    }
+
+    /// [`Walker::set_params`] as at master phase `phase` (the walk's, or a phase boundary
+    /// inside the update under way: the pace changes speed at heel strike).
+    pub(super) fn set_params_at(&mut self, params: &WalkParams, phase: f64) -> Result<bool, ModelError> {
         if params.body != self.params.body || params.terrain != self.params.terrain {
             return Ok(false);
         }
         let r = params.resolve();
         let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
-        let p_right = self.phase.rem_euclid(1.0);
-        let p_left = (self.phase - 0.5).rem_euclid(1.0);
+        let p_right = phase.rem_euclid(1.0);
+        let p_left = (phase - 0.5).rem_euclid(1.0);
         self.gait.live.change_to(cycle_targets(&design, &r), p_right, p_left);
         let traj = trajectory_curves(&design);
         if traj.forward_ds_ms != self.gait.traj.forward_ds_ms
@@ -34,7 +40,7 @@ impl Walker {
         // Phase boundaries must not jump behind a leg that is inside the phase they end.
         let mut r = r;
         for leg in &self.legs {
-            let q = self.phase - leg.cycle_start;
+            let q = phase - leg.cycle_start;
             match leg.phase {
                 LegPhase::LoadingResponse => r.foot_flat = r.foot_flat.max(q),
                 LegPhase::Midstance => r.heel_rise = r.heel_rise.max(q),

@@ -9,13 +9,16 @@
 //!
 //! [`Walker`] here keeps the clock and the phases. The rest has its own file: the rules at
 //! one moment and the one footfall builder (`gait`), the pose builder (`pose`), the start
-//! (`start`), the step planner (`planner`), parameter changes during the walk (`live`); the
-//! last two add `impl Walker` blocks, called here as methods only, so no file imports back.
+//! (`start`), the step planner (`planner`), parameter changes during the walk (`live`), pace
+//! changes and the stop (`pace`, its state in `pace_state`); the planner, `live` and `pace`
+//! add `impl Walker` blocks, called here as methods only, so no file imports back.
 
 pub mod frame;
 pub mod gait;
 pub mod leg;
 mod live;
+pub mod pace;
+mod pace_state;
 pub mod pelvis;
 mod planner;
 pub mod pose;
@@ -39,6 +42,7 @@ use crate::model::terrain::Terrain;
 use gait::{LiveCurves, cycle_targets, trajectory_curves};
 use glam::DVec3;
 use leg::{Footfall, LegPhase, LegPose, LegState, LegTarget};
+use pace_state::Pace;
 use pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use pose::build_pose;
 use start::standing_start;
@@ -121,6 +125,7 @@ pub struct Walker {
     arm_hang: ArmHang,
     upper: UpperBody,
     pose: Pose,
+    pace: Pace,
 }
 
 /// Checks that `params` make a walk — the curve overrides build, the leg phases come in
@@ -191,9 +196,11 @@ impl Walker {
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
             upper: UpperBody::default(),
+            pace: Pace::new(&[], 0.0),
         };
         walker.plan_start();
         walker.evaluate_now();
+        walker.pace = Pace::new(&params.schedule, walker.pelvis.position.x);
         Ok(walker)
     }
 
@@ -202,11 +209,16 @@ impl Walker {
         if dt_s.is_nan() || dt_s <= 0.0 || !dt_s.is_finite() {
             return;
         }
-        let total = dt_s / self.gait.r.cycle_s;
-        let n = (total / MAX_UPDATE_CYCLES).ceil().max(1.0) as usize;
-        let d = total / n as f64;
-        for _ in 0..n {
-            self.update_to(self.phase + d);
+        self.poll_schedule();
+        if let Some(from_cycle) = self.blending_from() {
+            self.advance_blending(dt_s, from_cycle);
+        } else {
+            let total = dt_s / self.gait.r.cycle_s;
+            let n = (total / MAX_UPDATE_CYCLES).ceil().max(1.0) as usize;
+            let d = total / n as f64;
+            for _ in 0..n {
+                self.update_to(self.phase + d);
+            }
         }
         self.time_s += dt_s;
     }
@@ -239,6 +251,7 @@ impl Walker {
         self.phase = target;
         self.plan.forget_before(target - 1.0);
         self.evaluate_now();
+        self.check_standing();
     }
 
     /// Master phase at which `side`'s current phase ends.
@@ -246,8 +259,9 @@ impl Walker {
         let leg = &self.legs[side.index()];
         let end = match leg.phase {
             LegPhase::LoadingResponse => self.gait.r.foot_flat,
+            LegPhase::Midstance if self.holds_midstance(leg) => return f64::INFINITY,
             LegPhase::Midstance => self.gait.r.heel_rise,
-            LegPhase::HeelRise => self.gait.r.toe_off,
+            LegPhase::HeelRise => leg.toe_off,
             LegPhase::Swing => 1.0,
         };
         leg.cycle_start + end
@@ -284,8 +298,18 @@ impl Walker {
         self.pelvis = pelvis;
         let p_right = self.phase.rem_euclid(1.0);
         let arm_phase = [p_right, (self.phase - 0.5).rem_euclid(1.0)];
-        let shoulder = [self.gait.live.shoulder[0].eval(arm_phase[0]), self.gait.live.shoulder[1].eval(arm_phase[1])];
-        let elbow = [self.gait.live.elbow[0].eval(arm_phase[0]), self.gait.live.elbow[1].eval(arm_phase[1])];
+        let mut shoulder =
+            [self.gait.live.shoulder[0].eval(arm_phase[0]), self.gait.live.shoulder[1].eval(arm_phase[1])];
+        let mut elbow = [self.gait.live.elbow[0].eval(arm_phase[0]), self.gait.live.elbow[1].eval(arm_phase[1])];
+        if let Some(settle) = self.plan.settling() {
+            // At the walk's end the arms come to hang: the swing fades about its middle.
+            let keep = 1.0 - settle.weight(self.phase);
+            let elbow_mid = self.gait.r.elbow_min_flex + 0.5 * self.gait.r.elbow_range;
+            for side in 0..2 {
+                shoulder[side] *= keep;
+                elbow[side] = elbow_mid + (elbow[side] - elbow_mid) * keep;
+            }
+        }
         self.lap(FramePart::Curves);
         let bend = upper::trunk_bend(self.gait.r.dims.trunk_segments(), pelvis.obliquity);
         self.lap(FramePart::Spine);
@@ -384,7 +408,11 @@ impl Walker {
         let pose = self.legs[i].pose;
         let next = self.legs[i].phase.next();
         match next {
-            LegPhase::Midstance | LegPhase::HeelRise => enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r),
+            LegPhase::Midstance => enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r),
+            LegPhase::HeelRise => {
+                enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r);
+                self.legs[i].heel_rise_scale *= self.closing_heel_rise_share(&self.legs[i]);
+            }
             LegPhase::Swing => {
                 self.plan_step(side, at, &pose);
                 self.legs[i].phase = next;
@@ -397,6 +425,7 @@ impl Walker {
                 leg.strike_angle = pose.target.pitch - plan.to.ground_angle;
                 leg.cycle_start += 1.0;
                 leg.phase = next;
+                self.pace_at_heel_strike(at);
             }
         }
         self.legs[i].phase_serial += 1;

@@ -42,12 +42,103 @@ pub struct PelvisKey {
 #[derive(Clone, Debug, Default)]
 pub struct PelvisPlan {
     keys: VecDeque<PelvisKey>,
+    /// The walk's end, once planned: from its start the pelvis leaves the keys and comes to
+    /// rest over the feet.
+    settle: Option<Settle>,
+}
+
+/// How the pelvis comes to rest at the end of a walk (see `docs/gait-model.md`, §13).
+///
+/// Forward, a cubic Hermite from where and how fast the pelvis was going at `from_phase` to
+/// standing still at `x1`: its start slope is the walk's, its end slope zero, and the span is
+/// chosen so the start slope lies between 1.5 and 2.5 times the distance — never past 3, where
+/// a cubic with a zero end slope would overshoot `x1` and come back. Height, the sway and
+/// the three rotations are blended from the walk's values into standing ones by a smoothstep
+/// over the same span, so none of them starts or stops with a jump in speed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settle {
+    /// Master phase the settling starts at.
+    pub from_phase: f64,
+    /// Phases it lasts.
+    pub span: f64,
+    /// Forward position at the start (m).
+    pub x0: f64,
+    /// Forward speed at the start times the span (m): the Hermite's start tangent.
+    pub m0: f64,
+    /// Forward position at rest (m).
+    pub x1: f64,
+    /// Height at rest (m).
+    pub y1: f64,
+    /// Phases after `from_phase` the height keeps to the keys before it too blends: until
+    /// the closing step's toe-off, the trailing leg still stands where the walk put it (on
+    /// stairs a tread lower), and raising the pelvis to the leading foot's standing height
+    /// would pull it off the ground.
+    pub y_delay: f64,
+}
+
+impl Settle {
+    /// A settling from `x0`, moving at `v0` m per cycle at `from_phase`, to rest at `x1`,
+    /// taking as near `wanted_span` cycles as the no-overshoot bounds allow.
+    #[must_use]
+    pub fn new(from_phase: f64, x0: f64, v0: f64, (x1, y1): (f64, f64), wanted_span: f64, y_delay: f64) -> Self {
+        let distance = (x1 - x0).max(0.02);
+        let v0 = v0.max(1e-3);
+        let span = wanted_span.clamp(1.5 * distance / v0, 2.5 * distance / v0);
+        Settle { from_phase, span, x0, m0: v0 * span, x1: x0 + distance, y1, y_delay: y_delay.min(0.5 * span) }
+    }
+
+    /// The blend weight of the standing height at `phase`: a smoothstep over the span after
+    /// the delay.
+    #[must_use]
+    pub fn height_weight(&self, phase: f64) -> f64 {
+        let from = self.from_phase + self.y_delay;
+        let s = ((phase - from) / (self.end_phase() - from)).clamp(0.0, 1.0);
+        s * s * (3.0 - 2.0 * s)
+    }
+
+    /// Progress through the settling at `phase`: 0 before, 1 once at rest.
+    #[must_use]
+    pub fn progress(&self, phase: f64) -> f64 {
+        ((phase - self.from_phase) / self.span).clamp(0.0, 1.0)
+    }
+
+    /// The blend weight of the standing values at `phase` (smoothstep of the progress).
+    #[must_use]
+    pub fn weight(&self, phase: f64) -> f64 {
+        let s = self.progress(phase);
+        s * s * (3.0 - 2.0 * s)
+    }
+
+    /// Master phase at which the pelvis is at rest.
+    #[must_use]
+    pub fn end_phase(&self) -> f64 {
+        self.from_phase + self.span
+    }
+
+    /// Forward position at `phase` (after `from_phase`).
+    fn x(&self, phase: f64) -> f64 {
+        let s = self.progress(phase);
+        let h10 = s * (1.0 - s) * (1.0 - s);
+        let h01 = s * s * (3.0 - 2.0 * s);
+        self.x0 + h10 * self.m0 + h01 * (self.x1 - self.x0)
+    }
 }
 
 /// Keys kept behind the current phase (for the optimiser's look-back and plots).
 const KEYS_KEPT_BEHIND: usize = 4;
 
 impl PelvisPlan {
+    /// Starts the walk's end: from `settle.from_phase` on, the pelvis comes to rest.
+    pub fn settle(&mut self, settle: Settle) {
+        self.settle = Some(settle);
+    }
+
+    /// The walk's end, if planned.
+    #[must_use]
+    pub fn settling(&self) -> Option<&Settle> {
+        self.settle.as_ref()
+    }
+
     /// Appends a key; keys must come in phase order.
     pub fn push(&mut self, key: PelvisKey) {
         debug_assert!(self.keys.back().is_none_or(|k| k.phase < key.phase));
@@ -116,7 +207,13 @@ impl PelvisPlan {
         let w = 1.0 - u;
         let x = a.x + dx * forward.eval(u) + d0 * u * w * w - d1 * u * u * w;
         let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
-        (x, y)
+        match &self.settle {
+            Some(settle) if phase > settle.from_phase => {
+                let w = settle.height_weight(phase);
+                (settle.x(phase), y + (settle.y1 - y) * w)
+            }
+            _ => (x, y),
+        }
     }
 }
 

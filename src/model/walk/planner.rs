@@ -11,10 +11,9 @@ use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
-use crate::model::walk::gait::{
-    MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, place_footfall, shank_angle, swing_target,
-};
+use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, shank_angle, swing_target};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
+use crate::model::walk::pace_state::StepKind;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
@@ -35,36 +34,39 @@ impl Walker {
     }
 
     /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
-    /// swing [6.3.2].
-    pub(super) fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
+    /// swing [6.3.2] (called by [`Walker::plan_step`], with the walk's toe-off set to the
+    /// stepping leg's).
+    pub(super) fn plan_swing_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
         self.lap(FramePart::Bookkeeping);
         let i = side.index();
         let other = self.legs[side.other().index()].footfall;
-        // Footfall: a step on from the previous footfall's nominal place, settled on the ground.
-        let nominal_x = other.nominal_x + 0.5 * self.gait.r.stride_m;
-        let to = place_footfall(&self.terrain, &self.gait.r, other.step + 1, side, nominal_x);
+        // Footfall: a step on from the previous footfall's nominal place, settled on the ground
+        // (at the walk's end a shorter braking step, then the closing step beside it).
+        let (kind, to) = self.next_footfall(side, &other);
         let strike_phase = self.legs[i].cycle_start + 1.0;
-        // Pelvis keys: the coming double support (its position chosen below), then this leg's
-        // mid-stance.
+        // Pelvis keys: the coming double support (position chosen below), this leg's mid-stance.
         let ms_before = self.push_step_keys(&other, &to, strike_phase);
+        if kind == StepKind::Braking {
+            self.begin_settle(at, &to);
+        }
         // Swing planning step 1: the ankle curve, and the foot angle it strikes at under the
         // pelvis planned so far.
         let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
         let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
         let landing = LegState {
-            side,
-            phase: LegPhase::LoadingResponse,
             cycle_start: strike_phase,
             footfall: to,
             anchor: to.heel,
             strike_angle,
-            heel_rise_scale: self.legs[i].heel_rise_scale,
+            phase: LegPhase::LoadingResponse,
             swing: None,
             phase_serial: 0,
             pose: *toe_off_pose,
+            ..self.legs[i].clone()
         };
-        // Step 2: the heel-height curve.
+        // Step 2: the heel-height curve (the closing step's lowered: `swing_lift`).
         let ground_from = self.legs[i].footfall.heel.y;
+        let lift = self.swing_lift(kind, &self.legs[i].footfall, &to, toe_off_pose.heel.x);
         let mut plan = SwingPlan {
             heel_from: toe_off_pose.heel,
             ground_from,
@@ -74,19 +76,18 @@ impl Walker {
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
             ankle_deg,
-            heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to),
+            heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to, lift),
             raises: 0,
         };
         // The end of the swing and the stance phases this plan sets up must reach: lower the
-        // pelvis where they would not.
-        // The guard runs twice: first with the double support at the fixed rule, so that the
-        // optimiser searches around keys the legs can follow (the mid-stance key in
+        // pelvis where they would not. Twice: first with the double support at the fixed rule,
+        // so that the optimiser searches around keys the legs can follow (the mid-stance key in
         // particular, which no candidate moves), then for the chosen position.
         let mut guard_drop = self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
         let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
         let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
         self.lap(FramePart::SwingPlanning);
-        let record = self.choose_double_support(side, at, to.step, landing, ms_before, ds, ms_after);
+        let record = self.decide_double_support(kind, side, at, landing, [ms_before, ds, ms_after]);
         self.lap(FramePart::PelvisChoice);
         if (record.chosen.x, record.chosen.y) != (ds.x, ds.y) {
             // The chosen pelvis sets the shank at heel strike and with it the angle the foot
@@ -112,6 +113,7 @@ impl Walker {
         });
         self.footfalls.push(to);
         self.legs[i].swing = Some(plan);
+        self.step_planned(kind, &to);
         self.lap(FramePart::SwingPlanning);
     }
 
@@ -142,14 +144,23 @@ impl Walker {
 
     /// The step's heel-height curve (m above `ground_from`, the toe-off ground): the design
     /// curve scaled to the heel's height at toe-off (`heel_from_y`), its end moved by the
-    /// terrain step to `to`, its middle raised by the knee-lift parameter. The swing
+    /// terrain step to `to`, its middle raised by the knee-lift parameter, and for the closing
+    /// step lowered toward its ends by `lift` (1 for every other step). The swing
     /// simulation raises it further where it must.
-    fn adapt_swing_heel(&self, heel_from_y: f64, ground_from: f64, to: &Footfall) -> Curve {
+    fn adapt_swing_heel(&self, heel_from_y: f64, ground_from: f64, to: &Footfall, lift: f64) -> Curve {
         let mut heel_height = self.gait.design.get(CurveName::SwingHeelHeight).clone();
         heel_height.scale(1.0, ((heel_from_y - ground_from) / SWING_HEEL_DESIGN_M).max(0.05));
         heel_height.shift_end(to.heel.y - ground_from - heel_height.eval(1.0));
         if self.gait.r.knee_lift > 0.0 {
             heel_height.raise_at(0.5, self.gait.r.knee_lift);
+        }
+        if lift < 1.0 {
+            // Lower the middle, keep both ends: scale, then put the ends back (both shifts
+            // are linear in x, so the joins stay smooth).
+            let (start, end) = (heel_height.eval(0.0), heel_height.eval(1.0));
+            heel_height.scale(1.0, lift);
+            heel_height.shift_start(start * (1.0 - lift));
+            heel_height.shift_end(end * (1.0 - lift));
         }
         // The heel must come down onto the footfall, never up into it: a big step up tilts
         // the shifted curve's end upward, so the last handle is set back to a descent.
