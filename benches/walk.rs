@@ -1,6 +1,7 @@
 //! Speed of the walk model: one full-body frame update, the update that plans a swing at
 //! toe-off, writing the joint table, and one step's pelvis optimisation by each method; and of
-//! the report: its glTF file alone, and the whole default report. Figures and machine in
+//! the report: the default config's whole (issue 15: ≤ 1.5 s with its GIF and glTF), its
+//! glTF file alone, and its walk for slides (`walk.gif`, `walk.svg`) alone. Figures and machine in
 //! `benches/README.md`.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
@@ -186,39 +187,40 @@ fn optimiser(c: &mut Criterion) {
     group.finish();
 }
 
-/// The report on the default config at its `sim.cycles` (10 cycles, 60 fps, 653 frames) as
-/// `gaitlab report configs/default.toml` makes it (issue 15: ≤ 1.5 s with its GIF and glTF),
-/// and its `walk.glb` alone from the recorded poses.
+/// `gaitlab report configs/default.toml` as the command writes it (its 10 cycles at 60 fps,
+/// every file and plot), and its `walk.glb` and its animation alone on the same recording.
 fn report(c: &mut Criterion) {
-    use gaitlab::report::{ReportInput, resolve_out, write_report};
-    let text = presets::default_text();
-    let params = gaitlab::config::load_text(text, "default.toml", &[]).unwrap();
-    let run =
-        gaitlab::analysis::record(&params, f64::from(params.sim.cycles), params.sim.fps, gaitlab::analysis::Keep::ALL)
-            .unwrap();
-    let mut group = c.benchmark_group("report");
-    group.bench_function("walk.glb, default, 10 cycles", |b| {
-        b.iter(|| black_box(gaitlab::output::gltf::glb(&run.gait.resolved().dims, &run.poses, run.fps)).len());
-    });
-    let dir = std::env::temp_dir().join(format!("gaitlab-bench-report-{}", std::process::id()));
-    let input = ReportInput {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
+    let (text, params) = gaitlab::config::load_with_text(&path, &[]).unwrap();
+    let out = std::env::temp_dir().join(format!("gaitlab-bench-report-{}", std::process::id()));
+    let input = gaitlab::report::ReportInput {
         name: "default".into(),
-        source_text: text,
+        source_text: &text,
         params: &params,
         cycles: params.sim.cycles,
         fps: params.sim.fps,
         compare: Vec::new(),
         ik_solvers: Vec::new(),
     };
+    let mut group = c.benchmark_group("report, default config");
     group.sample_size(10);
-    group.bench_function("whole report, default, 10 cycles", |b| {
+    group.bench_function("whole report (10 cycles at 60 fps, walk.glb, walk.gif and walk.svg included)", |b| {
         b.iter(|| {
-            let target = resolve_out(&dir, false).unwrap();
-            write_report(&input, &target, &mut |_| {}).unwrap()
+            let target = gaitlab::report::resolve_out(&out, false).unwrap();
+            black_box(gaitlab::report::write_report(&input, &target, &mut |_| {}).unwrap());
         });
     });
+    let run =
+        gaitlab::analysis::record(&params, f64::from(params.sim.cycles), params.sim.fps, gaitlab::analysis::Keep::ALL)
+            .unwrap();
+    group.bench_function("walk.glb from the recording", |b| {
+        b.iter(|| black_box(gaitlab::output::gltf::glb(&run.gait.resolved().dims, &run.poses, run.fps)).len());
+    });
+    group.bench_function("walk.gif and walk.svg from the recording", |b| {
+        b.iter(|| black_box(gaitlab::report::plots::animation::animate("default", &run).unwrap().gif.len()));
+    });
     group.finish();
-    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
 }
 
 criterion_group!(benches, frame_update, toe_off_planning, stop_planning, joint_table_rows, optimiser, report);

@@ -61,6 +61,7 @@ fn default_report_has_every_file_header_and_key_and_repeats_byte_for_byte() {
         assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), dir.display().to_string());
     }
     for file in gaitlab::report::FILES {
+        // As bytes: walk.gif is not text.
         let bytes = |dir: &Path| std::fs::read(dir.join(file)).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(bytes(&a) == bytes(&b), "{file} differs between runs");
     }

@@ -66,6 +66,8 @@ pub const FILES: &[&str] = &[
     "ik.csv",
     "walk.bvh",
     "walk.glb",
+    "walk.gif",
+    "walk.svg",
 ];
 
 /// Decides where a report may go (see [`output::folder`]), before any walking is done.
@@ -121,6 +123,10 @@ pub fn write_report(
         write_bvh(&file("walk.bvh"), &run).map_err(|e| format!("cannot write walk.bvh: {e}"))?;
         progress("writing walk.glb");
         write_glb(&file("walk.glb"), &run).map_err(|e| format!("cannot write walk.glb: {e}"))?;
+        progress("drawing walk.gif and walk.svg");
+        let animation = plots::animation::animate(&input.name, &run)?;
+        fs::write(file("walk.gif"), &animation.gif).map_err(|e| format!("cannot write walk.gif: {e}"))?;
+        write("walk.svg", &animation.svg)?;
         progress("drawing plots");
         let plots = temp.join("plots");
         fs::create_dir_all(&plots).map_err(|e| format!("cannot create {}: {e}", plots.display()))?;
@@ -138,7 +144,7 @@ pub fn write_report(
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
         let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
-        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik))?;
+        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik, &animation.clip))?;
         Ok(())
     })?;
     Ok(summary)
@@ -259,6 +265,7 @@ fn summary_md(
     others: &[(&str, &Summary)],
     normative: &crate::normative::Comparison,
     ik: &IkRows<'_>,
+    clip: &plots::animation::Clip,
 ) -> String {
     let mut md = summary_intro(input, others);
     figures_table(&mut md, input, s, others);
@@ -269,6 +276,16 @@ fn summary_md(
     for plot in plots::PLOTS {
         let _ = writeln!(md, "- [{plot}](plots/{plot}.png) ([svg](plots/{plot}.svg))");
     }
+    let _ = writeln!(
+        md,
+        "- [walk.gif](walk.gif) ([svg](walk.svg)): the walk for slides, side and from ahead, {} looping at \
+         the walk's pace ({} frames at {} fps, {}x{})",
+        clip.describe(),
+        clip.frames,
+        plots::animation::FPS,
+        plots::animation::WIDTH,
+        plots::animation::HEIGHT
+    );
     md.push_str(
         "\nTables: [joints.csv](joints.csv) (one row a frame), [footfalls.csv](footfalls.csv), \
          [optimisation.csv](optimisation.csv) (every candidate of every step), [ik.csv](ik.csv) (every IK \

@@ -8,8 +8,10 @@
 //!
 //! Each plot is drawn in its own file under `plots/`; `common` holds what they share,
 //! `data` the run prepared once for all of them, and `chrono` the stick figure's layout
-//! (which instants, which slot each figure takes).
+//! (which instants, which slot each figure takes). `animation` draws the walk for slides
+//! (`walk.gif`, `walk.svg`) from the same geometry.
 
+pub mod animation;
 mod chrono;
 mod common;
 mod cycle;

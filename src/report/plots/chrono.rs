@@ -32,7 +32,7 @@ pub(super) enum View {
 
 impl View {
     /// A point's page coordinates (m) in this view.
-    fn project(self, p: DVec3) -> (f64, f64) {
+    pub(super) fn project(self, p: DVec3) -> (f64, f64) {
         match self {
             View::Side => (p.x, p.y),
             View::Front => (-p.z, p.y),
@@ -203,12 +203,15 @@ pub(super) fn row(d: &Data<'_>, instants: &[Instant], view: View) -> Row {
 }
 
 /// The terrain's profile from `x0` to `x1`: the ends and every corner, a riser's two
-/// heights both, which is exact for the piecewise-linear terrains.
-fn side_ground(terrain: &Terrain, x0: f64, x1: f64) -> Vec<(f64, f64)> {
+/// heights both, which is exact for the piecewise-linear terrains. Both heights are taken a
+/// nanometre either side of the corner: at the corner itself, rounding can put a stair's
+/// riser (`start + i·run`) a hair short of the next step, which drew the tread beyond it as
+/// a ramp.
+pub(super) fn side_ground(terrain: &Terrain, x0: f64, x1: f64) -> Vec<(f64, f64)> {
     let mut profile = vec![(x0, terrain.height(x0))];
     for c in terrain.corners_between(x0, x1) {
         profile.push((c, terrain.height(c - 1e-9)));
-        profile.push((c, terrain.height(c)));
+        profile.push((c, terrain.height(c + 1e-9)));
     }
     profile.push((x1, terrain.height(x1)));
     profile
@@ -218,7 +221,7 @@ fn side_ground(terrain: &Terrain, x0: f64, x1: f64) -> Vec<(f64, f64)> {
 /// stands on (the highest ground under its heel and toe) under each half of the slot, the
 /// two halves split between the feet. On the flat one line; on stairs the two steps the
 /// feet are on.
-fn front_ground(terrain: &Terrain, legs: &[LegFrame; 2], x0: f64, x1: f64) -> Vec<(f64, f64)> {
+pub(super) fn front_ground(terrain: &Terrain, legs: &[LegFrame; 2], x0: f64, x1: f64) -> Vec<(f64, f64)> {
     let mut feet: Vec<(f64, f64)> = legs
         .iter()
         .map(|l| {
@@ -239,7 +242,7 @@ fn front_ground(terrain: &Terrain, legs: &[LegFrame; 2], x0: f64, x1: f64) -> Ve
 /// the leg from the frame's joints (as the joint table has them) and the arm from the pose,
 /// and the trunk from the pelvis to the head. Seen from the side the far (left) limbs come
 /// first and the near ones last, so that the body is drawn over what it hides.
-fn figure(pose: &Pose, legs: &[LegFrame; 2], view: View) -> (Vec<Segment>, (f64, f64)) {
+pub(super) fn figure(pose: &Pose, legs: &[LegFrame; 2], view: View) -> (Vec<Segment>, (f64, f64)) {
     let mut segments = Vec::new();
     let mut seg = |a: DVec3, b: DVec3, part: Part| segments.push((view.project(a), view.project(b), part));
     let limbs = |side: Side, seg: &mut dyn FnMut(DVec3, DVec3, Part)| {
@@ -265,4 +268,26 @@ fn figure(pose: &Pose, legs: &[LegFrame; 2], view: View) -> (Vec<Segment>, (f64,
     limbs(near, &mut seg);
     let head = view.project(pose.pos(Bone::Head));
     (segments, (head.0, head.1 + HEAD_M))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::terrain::TerrainKind;
+
+    #[test]
+    fn the_ground_of_stairs_is_level_treads_and_upright_risers() {
+        // The stairs_up config's flight: at its second riser (x = 2.34), `start + i·run`
+        // rounds a hair short of the step, which once drew the tread beyond as a ramp.
+        for up in [true, false] {
+            let kind = TerrainKind::Stairs { rise_m: 0.15, run_m: 0.34, count: 8, up, start_x_m: 2.0 };
+            let ground = side_ground(&Terrain::new(kind), 1.5, 5.5);
+            assert_eq!(ground.len(), 2 + 2 * 8);
+            for w in ground.windows(2) {
+                let (a, b) = (w[0], w[1]);
+                let riser = a.0 == b.0 && ((a.1 - b.1).abs() - 0.15).abs() < 1e-9;
+                assert!(riser || (a.1 - b.1).abs() < 1e-12, "neither tread nor riser: {a:?} to {b:?}");
+            }
+        }
+    }
 }
