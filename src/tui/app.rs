@@ -344,7 +344,7 @@ impl App {
     /// Does what `action` asks.
     pub(crate) fn perform(&mut self, action: Action) {
         self.message = None;
-        if self.point_action(action) {
+        if self.point_action(action) || self.pace_action(action) {
             return;
         }
         match action {
@@ -403,23 +403,28 @@ impl App {
             | Action::ToggleGrid
             | Action::ToggleNorms
             | Action::NextPanel => self.show(action),
-            // Handled by `point_action` above.
+            // Handled by `point_action` and `pace_action` above.
             Action::NextPoint | Action::PrevPoint | Action::LeavePoints => {}
+            Action::PaceDown | Action::PaceUp | Action::StopWalk => {}
             Action::RerunOptimiser => self.rerun_optimiser(),
             Action::Export => self.start_export(),
-            Action::NextMethod => {
-                let i = SearchMethod::ALL.iter().position(|m| *m == self.params.optimiser.method).unwrap_or(0);
-                let next = SearchMethod::ALL[(i + 1) % SearchMethod::ALL.len()];
-                let spec = config::schema::spec("optimiser.method").expect("a key");
-                self.set_value(spec, &Value::Word(next.name()));
-                self.rerun_optimiser();
-            }
-            Action::NextSolver => {
-                let i = IkSolverKind::ALL.iter().position(|k| *k == self.params.ik.solver).unwrap_or(0);
-                let next = IkSolverKind::ALL[(i + 1) % IkSolverKind::ALL.len()];
-                let spec = config::schema::spec("ik.solver").expect("a key");
-                self.set_value(spec, &Value::Word(next.name()));
-            }
+            Action::NextMethod | Action::NextSolver => self.next_choice(action == Action::NextMethod),
+        }
+    }
+
+    /// `m` / `i`: the next optimiser method (re-run at once) or leg IK solver, as an edit.
+    fn next_choice(&mut self, method: bool) {
+        if method {
+            let i = SearchMethod::ALL.iter().position(|m| *m == self.params.optimiser.method).unwrap_or(0);
+            let next = SearchMethod::ALL[(i + 1) % SearchMethod::ALL.len()];
+            let spec = config::schema::spec("optimiser.method").expect("a key");
+            self.set_value(spec, &Value::Word(next.name()));
+            self.rerun_optimiser();
+        } else {
+            let i = IkSolverKind::ALL.iter().position(|k| *k == self.params.ik.solver).unwrap_or(0);
+            let next = IkSolverKind::ALL[(i + 1) % IkSolverKind::ALL.len()];
+            let spec = config::schema::spec("ik.solver").expect("a key");
+            self.set_value(spec, &Value::Word(next.name()));
         }
     }
 

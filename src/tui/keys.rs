@@ -82,6 +82,12 @@ pub enum Action {
     PrevPoint,
     /// Stop editing points: the arrows change parameters again.
     LeavePoints,
+    /// Walk 0.1 m/s slower, reached over two steps (the pace schedule's ramp).
+    PaceDown,
+    /// Walk 0.1 m/s faster.
+    PaceUp,
+    /// Stop: a braking step, then the trailing foot beside the leading one.
+    StopWalk,
 }
 
 crate::model::variants::named_variants!(Action);
@@ -131,6 +137,9 @@ pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[
     (">", Action::NextPoint),
     ("<", Action::PrevPoint),
     ("esc", Action::LeavePoints),
+    ("-", Action::PaceDown),
+    ("+", Action::PaceUp),
+    ("w", Action::StopWalk),
 ];
 
 /// The help's lines: the actions each line covers, and what they do.
@@ -155,8 +164,8 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::ToggleGrid, Action::ToggleNorms], "curve grid / adult norms band on the joints"),
     (&[Action::NextPanel], "next panel (small screens)"),
     (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
-    (&[Action::NextSolver], "next leg IK solver (the walk switches live)"),
-    (&[Action::Export], "export a report of these parameters"),
+    (&[Action::NextSolver, Action::Export], "next leg IK solver (live) / export a report"),
+    (&[Action::PaceDown, Action::PaceUp, Action::StopWalk], "walk slower / faster (0.1 m/s) / stop"),
     (&[Action::NextPoint, Action::PrevPoint, Action::LeavePoints], "curve point: select (arrows move it) / done"),
 ];
 
@@ -344,7 +353,7 @@ mod tests {
         let documented = "quit help pause step slower faster restart up down group_up group_down decrease increase \
             decrease_coarse increase_coarse edit reset undo redo save save_as presets terrain toggle_view next_curve \
             prev_curve toggle_grid toggle_norms next_panel rerun_optimiser next_method next_ik_solver export next_point \
-            prev_point leave_points";
+            prev_point leave_points pace_down pace_up stop_walk";
         let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
         assert_eq!(names, documented.split_whitespace().collect::<Vec<_>>());
         for a in Action::ALL {

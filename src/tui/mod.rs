@@ -13,6 +13,7 @@ pub mod keys;
 pub mod mouse;
 pub mod msg;
 mod overlays;
+mod pace;
 pub mod points;
 pub mod recovery;
 pub mod save;

@@ -277,6 +277,7 @@ pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
             format!("{} ", app.value_text(crate::config::schema::spec("terrain.kind").expect("a key"))),
             Style::new().fg(Color::Green),
         ),
+        Span::styled(format!("{} ", app.walker.walk_state().name()), Style::new().fg(Color::Cyan)),
     ];
     match &app.message {
         Some(m) => spans.push(Span::styled(m.clone(), Style::new().fg(Color::Yellow))),

@@ -1,0 +1,63 @@
+//! The lab's pace keys: walk slower or faster while walking, or stop. A pace change is an
+//! edit of `walk.speed_mps` like any other (undoable, saved by `s`), but the walk takes it as
+//! the pace schedule does — over the next two heel strikes, never under a planted foot —
+//! instead of as a live edit.
+
+use super::app::{App, Edit};
+use super::keys::Action;
+use crate::config::schema::{Kind, spec};
+use crate::model::walk::pace::WalkState;
+
+/// How far one key press moves the speed (m/s).
+const PACE_STEP_MPS: f64 = 0.1;
+
+impl App {
+    /// `-`, `+` and `w`: slower, faster, stop. False for any other action.
+    pub(super) fn pace_action(&mut self, action: Action) -> bool {
+        if !matches!(action, Action::PaceDown | Action::PaceUp | Action::StopWalk) {
+            return false;
+        }
+        self.pace(action);
+        true
+    }
+
+    fn pace(&mut self, action: Action) {
+        match self.walker.walk_state() {
+            WalkState::Walking => {}
+            WalkState::Stopping => {
+                self.message = Some("stopping: the walk comes to rest (r walks again)".into());
+                return;
+            }
+            WalkState::Standing => {
+                self.message =
+                    Some("standing (r walks again, from mid-stride: a start from standing is not built)".into());
+                return;
+            }
+        }
+        if action == Action::StopWalk {
+            self.walker.request_stop();
+            self.message = Some("stopping: a braking step, then the feet side by side".into());
+            return;
+        }
+        let Some(Kind::Real { min: low, max: high, .. }) = spec("walk.speed_mps").map(|k| k.kind) else {
+            unreachable!("walk.speed_mps is a number with a range")
+        };
+        let sign = if action == Action::PaceUp { 1.0 } else { -1.0 };
+        let speed = self.params.walk.speed_mps;
+        // Rounded to the step so repeated presses land on 1.3, 1.4, ... not 1.4000000000000001.
+        let to = ((speed + sign * PACE_STEP_MPS) / PACE_STEP_MPS).round() * PACE_STEP_MPS;
+        let to = to.clamp(low, high);
+        if (to - speed).abs() < 1e-9 {
+            self.message =
+                Some(format!("walk.speed_mps is at its {} ({speed} m/s)", if sign > 0.0 { "most" } else { "least" }));
+            return;
+        }
+        let mut params = self.params.clone();
+        params.walk.speed_mps = to;
+        let before = std::mem::replace(&mut self.params, params.clone());
+        self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {to:.1}") });
+        self.redo.clear();
+        self.walker.request_speed(to);
+        self.message = Some(format!("walk.speed_mps = {to:.1}, reached over two steps"));
+    }
+}

@@ -1,0 +1,114 @@
+//! The lab's pace keys (issue 14, point 4): `+` / `-` change the walking speed by 0.1 m/s over
+//! the next two steps, as an undoable edit of `walk.speed_mps`; `w` stops the walk; the status
+//! line says whether the walk is walking, stopping or standing.
+
+use gaitlab::model::walk::pace::WalkState;
+use gaitlab::tui::app::App;
+use gaitlab::tui::{load_app, ui};
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::symbols::Marker;
+
+const FPS: f64 = 60.0;
+
+thread_local! {
+    /// Every frame each test walked, for the stance checks at its end.
+    static WALKED: std::cell::RefCell<Vec<gaitlab::model::walk::frame::Frame>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// No foot slid in stance, nothing out of reach or not finite, over all the test walked.
+fn assert_walked_cleanly() {
+    let checks = WALKED.with(|w| gaitlab::analysis::checks(&w.borrow()));
+    assert!(checks.foot_skate_mm < 1.0, "{checks:?}");
+    assert_eq!((checks.reach_failures, checks.non_finite_values), (0, 0), "{checks:?}");
+}
+
+fn status_line(app: &App) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer().clone();
+    (0..100).map(|x| buffer[(x, 29)].symbol().to_string()).collect()
+}
+
+fn key(app: &mut App, c: char) {
+    gaitlab::tui::effects::step(app, gaitlab::tui::app::Msg::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE)));
+}
+
+/// Walks `seconds` and returns the pelvis's mean forward speed over them (m/s).
+fn walk(app: &mut App, seconds: f64) -> f64 {
+    let from = app.frame.pelvis.x;
+    let frames = (seconds * FPS).round() as usize;
+    for _ in 0..frames {
+        app.tick(1.0 / FPS);
+        WALKED.with(|w| w.borrow_mut().push(app.frame.clone()));
+    }
+    (app.frame.pelvis.x - from) / (frames as f64 / FPS)
+}
+
+#[test]
+fn plus_and_minus_change_the_pace_over_two_steps_as_an_undoable_edit() {
+    let mut app = load_app(None, &[]).unwrap();
+    let cycle_s = app.params.resolve().cycle_s;
+    walk(&mut app, 2.0);
+    assert!(status_line(&app).contains("walking"), "{}", status_line(&app));
+    key(&mut app, '+');
+    key(&mut app, '+');
+    assert!((app.params.walk.speed_mps - 1.5).abs() < 1e-12, "{}", app.params.walk.speed_mps);
+    assert!(app.is_modified());
+    assert!(app.message.as_deref().unwrap_or_default().contains("reached over two steps"), "{:?}", app.message);
+    // Two steps to reach it, then a few cycles at the new pace: within 3 %.
+    walk(&mut app, 2.0);
+    let speed = walk(&mut app, 3.0 * cycle_s);
+    assert!((speed / 1.5 - 1.0).abs() < 0.03, "walked {speed} m/s after asking 1.5");
+    // `-` three times: 1.2 m/s.
+    for _ in 0..3 {
+        key(&mut app, '-');
+    }
+    walk(&mut app, 2.0);
+    let speed = walk(&mut app, 3.0 * cycle_s);
+    assert!((app.params.walk.speed_mps - 1.2).abs() < 1e-12);
+    assert!((speed / 1.2 - 1.0).abs() < 0.03, "walked {speed} m/s after asking 1.2");
+    // Each press is an edit: five undos bring back the file's 1.3 m/s, unmodified.
+    for _ in 0..5 {
+        key(&mut app, 'u');
+    }
+    assert!((app.params.walk.speed_mps - 1.3).abs() < 1e-12);
+    assert!(!app.is_modified());
+    walk(&mut app, 2.0);
+    let speed = walk(&mut app, 3.0 * cycle_s);
+    assert!((speed / 1.3 - 1.0).abs() < 0.03, "walked {speed} m/s after undoing back to 1.3");
+    assert_walked_cleanly();
+}
+
+#[test]
+fn w_stops_the_walk_and_the_status_line_follows_it_to_standing() {
+    let mut app = load_app(None, &[]).unwrap();
+    walk(&mut app, 2.0);
+    key(&mut app, 'w');
+    assert_eq!(app.walker.walk_state(), WalkState::Stopping);
+    assert!(status_line(&app).contains("stopping"), "{}", status_line(&app));
+    walk(&mut app, 3.0);
+    assert_eq!(app.walker.walk_state(), WalkState::Standing);
+    assert!(status_line(&app).contains("standing"), "{}", status_line(&app));
+    // At rest: the pelvis does not move over a second.
+    assert!(walk(&mut app, 1.0).abs() < 1e-9);
+    // Pace keys while standing say why nothing happens, and change nothing.
+    key(&mut app, '+');
+    assert!((app.params.walk.speed_mps - 1.3).abs() < 1e-12);
+    assert!(!app.is_modified());
+    assert!(app.message.as_deref().unwrap_or_default().contains("standing"), "{:?}", app.message);
+    // `r` walks again.
+    key(&mut app, 'r');
+    assert_eq!(app.walker.walk_state(), WalkState::Walking);
+    assert!(walk(&mut app, 2.0) > 1.0);
+}
+
+#[test]
+fn a_stopped_walk_stood_still_with_its_feet_planted() {
+    let mut app = load_app(None, &[]).unwrap();
+    walk(&mut app, 2.0);
+    key(&mut app, 'w');
+    walk(&mut app, 4.0);
+    assert_walked_cleanly();
+}
