@@ -444,3 +444,48 @@ fn the_least_report_length_measures_every_shipped_config() {
         assert!(summary.is_ok(), "{}: {:?}", path.display(), summary.err());
     }
 }
+
+/// A scheduled walk's report plots its pace over time with the events marked and lists the
+/// events in summary.md (issue 14, point 5); a walk without a schedule has neither.
+#[test]
+fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
+    let dir = temp("pace");
+    let out = gaitlab(&["report", "configs/pace.toml", "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let md = read(&dir, "summary.md");
+    let pace = &md[md.find("## Pace").expect("a Pace section")..];
+    let events: Vec<&str> = pace.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| time")).collect();
+    let kinds: Vec<&str> = events.iter().map(|l| l.rsplit('|').nth(1).unwrap().trim()).collect();
+    assert_eq!(
+        kinds,
+        [
+            "1.60 m/s asked",
+            "1.60 m/s reached",
+            "1.00 m/s asked",
+            "1.00 m/s reached",
+            "stop asked",
+            "braking",
+            "closing",
+            "standing"
+        ],
+        "{pace}"
+    );
+    let times: Vec<f64> = events.iter().map(|l| l.split('|').nth(1).unwrap().trim().parse().unwrap()).collect();
+    assert!(times.windows(2).all(|w| w[0] <= w[1]), "{times:?}");
+    assert!((times[0] - 4.0).abs() < 0.1 && (times[4] - 11.5).abs() < 0.1, "the schedule's times: {times:?}");
+    let png = image::open(dir.join("plots/speed.png")).expect("plots/speed.png decodes");
+    assert_eq!((png.width(), png.height()), (1600, 1000));
+    let svg = read(&dir, "plots/speed.svg");
+    let doc = roxmltree::Document::parse(&svg).expect("plots/speed.svg parses");
+    let text: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
+    for wanted in ["time (s)", "speed (m/s)", "stop asked", "standing", "walked"] {
+        assert!(text.contains(&wanted), "{wanted} missing from speed.svg");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+
+    let plain = temp("no-pace");
+    let out = gaitlab(&["report", "configs/default.toml", "--out", plain.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(!plain.join("plots/speed.png").exists() && !read(&plain, "summary.md").contains("## Pace"));
+    let _ = std::fs::remove_dir_all(&plain);
+}

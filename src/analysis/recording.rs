@@ -12,6 +12,7 @@ use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
 use crate::model::walk::frame::Frame;
 use crate::model::walk::leg::Footfall;
+use crate::model::walk::pace::PaceEvent;
 use crate::model::walk::{Gait, ModelError, StepPlan, Walker, ik_question};
 
 /// One IK question the walk asked.
@@ -70,6 +71,8 @@ pub struct Recording {
     /// For each entry of `step_plans`, the problem its pelvis choice solved and the rules it
     /// was costed with ([`Keep::step_problems`]; `None` where none was recorded).
     pub(crate) step_problems: Vec<Option<(StepProblem, Gait)>>,
+    /// What the pace schedule did (`[[walk.schedule]]`), in order; empty without one.
+    pub pace_events: Vec<PaceEvent>,
 }
 
 /// Runs `cycles` gait cycles at `fps` frames per second, keeping what `keep` asks for.
@@ -89,6 +92,7 @@ pub fn record(params: &WalkParams, cycles: f64, fps: f64, keep: Keep) -> Result<
         poses: Vec::new(),
         ik_targets: Vec::new(),
         step_problems: Vec::new(),
+        pace_events: Vec::new(),
     };
     for i in 0..=count {
         if i > 0 {
@@ -127,5 +131,6 @@ pub fn record(params: &WalkParams, cycles: f64, fps: f64, keep: Keep) -> Result<
     rec.footfalls = walker.footfalls().to_vec();
     rec.step_plans = walker.step_plans().to_vec();
     rec.reach_failures = walker.reach_failures();
+    rec.pace_events = walker.pace_events().to_vec();
     Ok(rec)
 }

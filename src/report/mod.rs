@@ -6,6 +6,7 @@
 mod against;
 pub mod figures;
 pub mod metrics;
+mod pace;
 pub mod plots;
 
 use crate::analysis::ik::{self, IkSummary, IkTarget, SolverRun};
@@ -134,6 +135,7 @@ pub fn write_report(
         walks.extend(others.iter().map(|(name, _, run, _)| plots::Walk { name: name.clone(), run }));
         plots::write_plots(&plots, &walks)?;
         plots::write_ik_plot(&plots, ik_targets, &ik_runs)?;
+        pace::write_speed_plot(&plots, &input.name, &run, input.params.walk.speed_mps)?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&against::SummaryJson::new(&summary, &normative))
             .map_err(|e| e.to_string())?;
@@ -144,7 +146,9 @@ pub fn write_report(
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
         let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
-        write("summary.md", &summary_md(input, &summary, &compared, &normative, &ik, &animation.clip))?;
+        let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip);
+        pace::section(&mut md, &run);
+        write("summary.md", &md)?;
         Ok(())
     })?;
     Ok(summary)

@@ -30,7 +30,16 @@ fn line(name: &str, rgb: (u8, u8, u8), width: u32, points: Vec<(f64, f64)>) -> L
 }
 
 fn panel(title: &str, x_desc: &str, y_desc: &str, x: std::ops::Range<f64>, lines: Vec<Line>) -> Panel {
-    Panel { title: title.into(), x_desc: x_desc.into(), y_desc: y_desc.into(), x, lines, band: None, span: None }
+    Panel {
+        title: title.into(),
+        x_desc: x_desc.into(),
+        y_desc: y_desc.into(),
+        x,
+        lines,
+        band: None,
+        span: None,
+        marks: Vec::new(),
+    }
 }
 
 /// Root mean square of the height change from one terrain segment to the next (cm): the

@@ -46,6 +46,9 @@ pub(crate) struct Panel {
     pub(crate) band: Option<Band>,
     /// A shaded x span (from, to) with its label at the top.
     pub(crate) span: Option<(f64, f64, String)>,
+    /// Events: a thin vertical line at each x with its label beside it, the labels stepped
+    /// down in four rows so that close events do not print over each other.
+    pub(crate) marks: Vec<(f64, String)>,
 }
 
 /// A figure: title (naming the thesis figure) and panels, stacked in `rows` rows.
@@ -100,6 +103,7 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, p: &Panel) -> Res {
         let at = (*from + 0.01 * (p.x.end - p.x.start), y.start + 0.04 * (y.end - y.start));
         chart.draw_series(std::iter::once(Text::new(label.clone(), at, (FONT, 20)))).map_err(err)?;
     }
+    let mark_ink = marks(&mut chart, &p.marks, &y, span)?;
     if let Some(b) = &p.band {
         chart
             .draw_series(std::iter::once(Polygon::new(b.polygon.clone(), BAND.mix(0.25))))
@@ -120,6 +124,8 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, p: &Panel) -> Res {
     if let Some(b) = &p.band {
         labels.push(&b.name);
     }
+    // The marks' labels count as ink the legend must leave free.
+    all.extend(mark_ink.iter().map(<[(f64, f64); 2]>::as_slice));
     let corner = legend_corner(chart.plotting_area().dim_in_pixel(), p.x.clone(), y, &labels, &all);
     chart
         .configure_series_labels()
@@ -129,6 +135,29 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, p: &Panel) -> Res {
         .position(corner)
         .draw()
         .map_err(err)
+}
+
+/// Draws each mark (a thin vertical line, its label beside its top, stepped down in four
+/// rows) and returns where the labels are, as two-point series for the legend to avoid.
+fn marks<DB: DrawingBackend>(
+    chart: &mut ChartContext<
+        '_,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+    marks: &[(f64, String)],
+    y: &Range<f64>,
+    span: f64,
+) -> Result<Vec<[(f64, f64); 2]>, String> {
+    let grey = RGBColor(90, 90, 90);
+    let mut ink = Vec::new();
+    for (i, (x, label)) in marks.iter().enumerate() {
+        chart.draw_series(LineSeries::new([(*x, y.start), (*x, y.end)], grey.stroke_width(1))).map_err(err)?;
+        let at = (*x + 0.004 * span, y.end - (0.03 + 0.05 * (i % 4) as f64) * (y.end - y.start));
+        chart.draw_series(std::iter::once(Text::new(label.clone(), at, (FONT, 18)))).map_err(err)?;
+        ink.push([at, (at.0 + 0.12 * span, at.1)]);
+    }
+    Ok(ink)
 }
 
 fn figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &Figure) -> Res {

@@ -1,0 +1,115 @@
+//! A scheduled walk's pace in the report (`[[walk.schedule]]`): `plots/speed.{png,svg}`, the
+//! pelvis's forward speed over time with the schedule's events marked, and a *Pace* section
+//! in `summary.md` listing the events. Written only for a walk whose schedule did something.
+
+use super::plots::{Figure, Line, Panel, write_figure};
+use crate::analysis::Run;
+use crate::model::walk::pace::PaceEventKind;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The plot's file stem under `plots/`.
+pub(crate) const SPEED_PLOT: &str = "speed";
+
+/// The pelvis's forward speed (m/s) over each step, heel strike to heel strike (either
+/// leg), at the step's middle, then over what follows the last strike: a step's own rise and
+/// fall of speed is not the pace.
+fn step_mean_speed(run: &Run) -> Vec<(f64, f64)> {
+    let frames = &run.frames;
+    let mut strikes: Vec<usize> = vec![0];
+    strikes.extend(
+        (1..frames.len())
+            .filter(|&i| (0..2).any(|side| frames[i].legs[side].phase < frames[i - 1].legs[side].phase - 0.5)),
+    );
+    strikes.push(frames.len() - 1);
+    strikes.dedup();
+    strikes
+        .windows(2)
+        .filter(|w| frames[w[1]].time_s > frames[w[0]].time_s)
+        .map(|w| {
+            let (a, b) = (&frames[w[0]], &frames[w[1]]);
+            (0.5 * (a.time_s + b.time_s), (b.pelvis.x - a.pelvis.x) / (b.time_s - a.time_s))
+        })
+        .collect()
+}
+
+/// The asked speed over time: the config's, then each `SpeedAsked`; zero from a stop on.
+fn asked_speed(run: &Run, start_mps: f64) -> Vec<(f64, f64)> {
+    let end = run.frames.last().map_or(0.0, |f| f.time_s);
+    let mut points = vec![(0.0, start_mps)];
+    let mut now = start_mps;
+    for e in &run.pace_events {
+        let to = match e.kind {
+            PaceEventKind::SpeedAsked(v) => v,
+            PaceEventKind::StopAsked => 0.0,
+            _ => continue,
+        };
+        points.push((e.time_s, now));
+        points.push((e.time_s, to));
+        now = to;
+    }
+    points.push((end, now));
+    points
+}
+
+fn label(kind: PaceEventKind) -> String {
+    match kind {
+        PaceEventKind::SpeedAsked(v) => format!("{v:.2} m/s asked"),
+        PaceEventKind::SpeedReached(v) => format!("{v:.2} m/s reached"),
+        other => other.name().replace('_', " "),
+    }
+}
+
+/// Writes `plots/speed.png` and `.svg` when the walk has pace events; false when it has none.
+pub(crate) fn write_speed_plot(dir: &Path, name: &str, run: &Run, start_mps: f64) -> Result<bool, String> {
+    if run.pace_events.is_empty() {
+        return Ok(false);
+    }
+    let end = run.frames.last().map_or(1.0, |f| f.time_s).max(1e-3);
+    let panel = Panel {
+        title: "pelvis forward speed, mean over each step (heel strike to heel strike)".into(),
+        x_desc: "time (s)".into(),
+        y_desc: "speed (m/s)".into(),
+        x: 0.0..end,
+        lines: vec![
+            Line {
+                name: "asked (schedule)".into(),
+                rgb: (120, 120, 120),
+                width: 2,
+                points: asked_speed(run, start_mps),
+            },
+            Line { name: "walked".into(), rgb: (200, 30, 30), width: 3, points: step_mean_speed(run) },
+        ],
+        band: None,
+        span: None,
+        marks: run.pace_events.iter().map(|e| (e.time_s, label(e.kind))).collect(),
+    };
+    let figure =
+        Figure { title: format!("{name}: pace over time, the schedule's events marked"), rows: 1, panels: vec![panel] };
+    write_figure(dir, SPEED_PLOT, &figure)?;
+    Ok(true)
+}
+
+/// The *Pace* section of `summary.md`: each event with its time, and what the figures above
+/// were measured over.
+pub(crate) fn section(md: &mut String, run: &Run) {
+    if run.pace_events.is_empty() {
+        return;
+    }
+    md.push_str(
+        "\n## Pace\n\nThe walk followed a pace schedule (`[[walk.schedule]]`):\n\n| time (s) | event |\n|---:|---|\n",
+    );
+    for e in &run.pace_events {
+        let _ = writeln!(md, "| {:.2} | {} |", e.time_s, label(e.kind));
+    }
+    let _ = writeln!(
+        md,
+        "\nThe figures above are measured over every cycle after the first, so they mix the schedule's \
+         plateaus{}: [speed](plots/{SPEED_PLOT}.png) ([svg](plots/{SPEED_PLOT}.svg)) shows the pace over time.",
+        if run.pace_events.iter().any(|e| e.kind == PaceEventKind::Standing) {
+            ", the stop and the standing"
+        } else {
+            ""
+        }
+    );
+}
