@@ -349,3 +349,39 @@ fn long_frames_are_split_and_no_phase_end_is_skipped() {
     }
     assert_eq!(coarse.footfalls().len(), fine.footfalls().len());
 }
+
+/// The live change of `changing_parameters_mid_walk_does_not_jerk_any_joint` asked at every
+/// other frame of a whole cycle instead of four chosen moments. Known to fail: a change in
+/// one of a few-frame windows, three or four a cycle (frames 120-124, 142-144, 160-162 and
+/// 182-184 here; in the one traced, the right leg at 0.28-0.31 of its cycle), leaves a
+/// stance leg out of reach for a frame about 30 frames later (traced: the left leg at the end
+/// of its mid-stance, just before heel rise), with up to 0.5 mm of slide and 1.5-1.8x the
+/// usual jerk; the four moments of the test above miss every window. Run it with
+/// `cargo test --release --test gait_normal -- --ignored` when working on live changes.
+#[test]
+#[ignore = "known failure: live edits in some few-frame windows fail reach (see the doc comment)"]
+fn a_live_change_at_any_moment_of_the_cycle_keeps_every_foot_planted_and_reached() {
+    let fps = 60.0;
+    let base = default_params();
+    let changed_params =
+        config::load_text("[walk]\nspeed_mps = 1.45\nsway = 1.4\n[arms]\nshoulder_range_deg = 35.0\n", "live", &[])
+            .unwrap();
+    let cycle_frames = (base.resolve().cycle_s * fps).ceil() as usize;
+    let mut failures = Vec::new();
+    for change_at in (120..120 + cycle_frames).step_by(2) {
+        let mut walker = Walker::new(&base).unwrap();
+        let mut frames = Vec::new();
+        for i in 0..400 {
+            if i == change_at {
+                assert!(walker.set_params(&changed_params).unwrap());
+            }
+            walker.advance(1.0 / fps);
+            frames.push(walker.frame(i as u64));
+        }
+        let checks = analysis::checks(&frames);
+        if checks.foot_skate_mm >= 0.5 || checks.reach_failures > 0 {
+            failures.push((change_at, checks.foot_skate_mm, checks.reach_failures));
+        }
+    }
+    assert!(failures.is_empty(), "changes at (frame, skate mm, reach failures): {failures:?}");
+}
