@@ -286,7 +286,8 @@ impl App {
         }
     }
 
-    /// Starts the walk again from standing with the current parameters.
+    /// Starts the walk again with the current parameters, from its first instant (mid-stride:
+    /// the double support after a right heel strike; a start from standing is not built).
     pub fn restart(&mut self) {
         match Walker::new(&self.params) {
             Ok(mut w) => {

@@ -21,7 +21,7 @@ pub enum Action {
     Slower,
     /// Double the simulation speed.
     Faster,
-    /// Restart the walk from standing.
+    /// Restart the walk from its first instant (mid-stride).
     Restart,
     /// Select the previous parameter.
     Up,
