@@ -34,6 +34,21 @@ pub(super) fn y_range(series: &[&[(f64, f64)]]) -> std::ops::Range<f64> {
 /// Legend label text size (px), shared so the legend's footprint can be estimated.
 pub(super) const LEGEND_FONT_PX: u32 = 20;
 
+/// Draws a chart's legend the one way every plot does (framed, on a nearly opaque white
+/// ground) at `font_px`, at `position` (plotters' own default place when `None`).
+pub(super) fn draw_legend<'a, DB: DrawingBackend + 'a, CT: plotters::coord::CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    font_px: u32,
+    position: Option<SeriesLabelPosition>,
+) -> Res {
+    let mut legend = chart.configure_series_labels();
+    legend.label_font((FONT, font_px)).background_style(WHITE.mix(0.85)).border_style(BLACK);
+    if let Some(position) = position {
+        legend.position(position);
+    }
+    legend.draw().map_err(err)
+}
+
 /// A chart over 0–100 % (of the gait cycle, or of a curve's own span) on `area`, with the
 /// report's caption, margins and label areas: the cycle and swing charts share its layout,
 /// so their axes line up and neither cuts its last label.

@@ -1,7 +1,9 @@
 //! Plots over the gait cycle, mean and min–max band of the steady cycles: the pelvis and the
 //! joint angles, with compared walks overlaid and measured adults' mean ± 1 SD behind them.
 
-use super::common::{FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_height_px, percent_chart, y_range};
+use super::common::{
+    FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_height_px, percent_chart, y_range,
+};
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
 use crate::normative::Reference;
@@ -70,14 +72,7 @@ fn cycle_chart<DB: DrawingBackend>(
             .map_err(err)?;
     }
     if rows > 0 {
-        chart
-            .configure_series_labels()
-            .label_font((FONT, LEGEND_FONT_PX))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(err)?;
+        draw_legend(&mut chart, LEGEND_FONT_PX, Some(SeriesLabelPosition::UpperRight))?;
     }
     Ok(())
 }

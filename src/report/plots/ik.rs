@@ -1,6 +1,6 @@
 //! The IK plot: each solver's ankle error and iterations on the walk's own targets.
 
-use super::common::{FONT, PALETTE, Res, SIZE, err};
+use super::common::{FONT, PALETTE, Res, SIZE, draw_legend, err};
 use crate::analysis::ik::{IkSample, IkTarget, SolverRun};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -66,14 +66,7 @@ pub(super) fn ik<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, targets: &[Ik
                         .label(run.solver.name())
                         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(3)));
                 }
-                chart
-                    .configure_series_labels()
-                    .label_font((FONT, 18))
-                    .background_style(WHITE.mix(0.85))
-                    .border_style(BLACK)
-                    .position(SeriesLabelPosition::UpperRight)
-                    .draw()
-                    .map_err(err)?;
+                draw_legend(&mut chart, 18, Some(SeriesLabelPosition::UpperRight))?;
             }};
         }
         if log {

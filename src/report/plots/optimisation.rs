@@ -1,7 +1,7 @@
 //! The pelvis-acceleration optimisation: one step's cost landscape, and every step's chosen
 //! position and cost against the fixed rule's.
 
-use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, err, y_range};
+use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, draw_legend, err, y_range};
 use super::data::Data;
 use crate::model::optimise::{Candidate, StepProblem};
 use crate::model::walk::{Gait, StepPlan};
@@ -81,13 +81,7 @@ fn landscape<DB: DrawingBackend>(
             .label("chosen")
             .legend(|(x, y)| TriangleMarker::new((x + 10, y), 8, LEFT.filled()));
     }
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 20))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(err)?;
+    draw_legend(&mut chart, 20, None)?;
     Ok(())
 }
 
@@ -174,12 +168,6 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         .map_err(err)?
         .label("optimised")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RIGHT.stroke_width(3)));
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 18))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(err)?;
+    draw_legend(&mut chart, 18, None)?;
     Ok(())
 }

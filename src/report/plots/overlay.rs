@@ -2,7 +2,7 @@
 //! --plot`): each curve in its panel, the stored one dark, this walk's red, and the figures
 //! that moved listed beside the panels.
 
-use super::common::{DESIGN, FONT, RIGHT, Res, err, y_range};
+use super::common::{DESIGN, FONT, RIGHT, Res, draw_legend, err, y_range};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -48,14 +48,7 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, (name, old, new): Ov
         .map_err(err)?
         .label("this walk")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], RIGHT.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 15))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)
+    draw_legend(&mut chart, 15, Some(SeriesLabelPosition::UpperRight))
 }
 
 /// Draws `title`, the curves in a grid of three columns, and `notes` (the moved figures, one

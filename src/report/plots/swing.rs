@@ -1,7 +1,9 @@
 //! Plots of the swing's curves over their own span: each design curve, and each step's
 //! curve as the planner adapted it to the terrain.
 
-use super::common::{DESIGN, FONT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, err, legend_corner, percent_chart, y_range};
+use super::common::{
+    DESIGN, FONT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_corner, percent_chart, y_range,
+};
 use super::data::Data;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
@@ -58,14 +60,7 @@ fn curve_chart<DB: DrawingBackend>(
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(3)));
     labels.push("design");
     let corner = legend_corner(chart.plotting_area().dim_in_pixel(), 0.0..100.0, y, &labels, &all);
-    chart
-        .configure_series_labels()
-        .label_font((FONT, LEGEND_FONT_PX))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(corner)
-        .draw()
-        .map_err(err)?;
+    draw_legend(&mut chart, LEGEND_FONT_PX, Some(corner))?;
     Ok(())
 }
 

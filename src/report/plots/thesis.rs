@@ -2,7 +2,7 @@
 //! of lines (with an optional grey band and a shaded span), described as plain data by
 //! `report::figures` and drawn here the report's way (size, font, legend placement).
 
-use super::common::{FONT, LEGEND_FONT_PX, Res, err, legend_corner, y_range};
+use super::common::{FONT, LEGEND_FONT_PX, Res, draw_legend, err, legend_corner, y_range};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::ops::Range;
@@ -127,14 +127,7 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, p: &Panel) -> Res {
     // The marks' labels count as ink the legend must leave free.
     all.extend(mark_ink.iter().map(<[(f64, f64); 2]>::as_slice));
     let corner = legend_corner(chart.plotting_area().dim_in_pixel(), p.x.clone(), y, &labels, &all);
-    chart
-        .configure_series_labels()
-        .label_font((FONT, LEGEND_FONT_PX))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(corner)
-        .draw()
-        .map_err(err)
+    draw_legend(&mut chart, LEGEND_FONT_PX, Some(corner))
 }
 
 /// Draws each mark (a thin vertical line, its label beside its top, stepped down in four
