@@ -2,6 +2,9 @@
 //! of the phases, both legs alike, feet landing where planned; stairs and slopes; live
 //! parameter changes.
 
+mod common;
+
+use common::{max_speed_changes, max_steps};
 use gaitlab::analysis;
 use gaitlab::config::{self, presets};
 use gaitlab::model::body::Side;
@@ -194,45 +197,6 @@ fn slopes_keep_feet_on_and_above_the_ground() {
         let climbed = end.legs[0].ground_under_heel;
         assert!(climbed.abs() > 0.5, "{name}: walked onto the slope ({climbed:.2} m)");
     }
-}
-
-/// Largest per-frame change of each joint angle over `frames`, both legs.
-fn max_steps(frames: &[Frame]) -> [f64; 4] {
-    let mut out = [0.0f64; 4];
-    for w in frames.windows(2) {
-        for side in 0..2 {
-            let (a, b) = (&w[0].legs[side], &w[1].legs[side]);
-            let d = [
-                (a.hip_flex_deg - b.hip_flex_deg).abs(),
-                (a.knee_flex_deg - b.knee_flex_deg).abs(),
-                (a.ankle_dorsi_deg - b.ankle_dorsi_deg).abs(),
-                (a.shoulder_flex_deg - b.shoulder_flex_deg).abs(),
-            ];
-            for i in 0..4 {
-                out[i] = out[i].max(d[i]);
-            }
-        }
-    }
-    out
-}
-
-/// The largest change of each joint's per-frame change (deg/frame², both legs): a spike
-/// here is a jerk, a jump in the joint's speed.
-fn max_speed_changes(frames: &[Frame]) -> [f64; 4] {
-    let angles = |f: &Frame, side: usize| {
-        let l = &f.legs[side];
-        [l.hip_flex_deg, l.knee_flex_deg, l.ankle_dorsi_deg, l.shoulder_flex_deg]
-    };
-    let mut out = [0.0f64; 4];
-    for w in frames.windows(3) {
-        for side in 0..2 {
-            let (a, b, c) = (angles(&w[0], side), angles(&w[1], side), angles(&w[2], side));
-            for i in 0..4 {
-                out[i] = out[i].max((c[i] - 2.0 * b[i] + a[i]).abs());
-            }
-        }
-    }
-    out
 }
 
 #[test]

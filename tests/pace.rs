@@ -2,6 +2,9 @@
 //! at rest with no slide, no jump and no joint faster or jerkier than in the steady walk; a
 //! speed schedule reaches each plateau within two steps; the config reads a schedule.
 
+mod common;
+
+use common::{max_speed_changes, max_steps};
 use gaitlab::analysis;
 use gaitlab::config::{self, presets};
 use gaitlab::model::params::WalkParams;
@@ -29,41 +32,6 @@ fn walk(params: &WalkParams, seconds: f64, fps: f64) -> (Vec<Frame>, Walker) {
         frames.push(w.frame(i));
     }
     (frames, w)
-}
-
-/// The largest per-frame change of each joint (deg/frame), both legs: hip, knee, ankle,
-/// shoulder (the live-change test's measure, tests/gait_normal.rs).
-fn max_steps(frames: &[Frame]) -> [f64; 4] {
-    let mut out = [0.0f64; 4];
-    for w in frames.windows(2) {
-        for side in 0..2 {
-            let (a, b) = (angles(&w[0], side), angles(&w[1], side));
-            for i in 0..4 {
-                out[i] = out[i].max((a[i] - b[i]).abs());
-            }
-        }
-    }
-    out
-}
-
-fn angles(f: &Frame, side: usize) -> [f64; 4] {
-    let l = &f.legs[side];
-    [l.hip_flex_deg, l.knee_flex_deg, l.ankle_dorsi_deg, l.shoulder_flex_deg]
-}
-
-/// The largest change of each joint's per-frame change (deg/frame²): a jump in a joint's
-/// speed (the live-change test's jerk measure).
-fn max_speed_changes(frames: &[Frame]) -> [f64; 4] {
-    let mut out = [0.0f64; 4];
-    for w in frames.windows(3) {
-        for side in 0..2 {
-            let (a, b, c) = (angles(&w[0], side), angles(&w[1], side), angles(&w[2], side));
-            for i in 0..4 {
-                out[i] = out[i].max((c[i] - 2.0 * b[i] + a[i]).abs());
-            }
-        }
-    }
-    out
 }
 
 /// The largest frame-to-frame change of the pelvis's velocity (m/s per frame, all three axes).
