@@ -12,9 +12,9 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
 use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, shank_angle, swing_target};
-use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan, foot_rotation};
+use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
 use crate::model::walk::pace_state::StepKind;
-use crate::model::walk::pelvis::{KeyKind, PelvisKey};
+use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
 use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
 use crate::model::walk::timing::FramePart;
@@ -361,17 +361,19 @@ impl Walker {
         // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
         // tread into the next riser).
         let trailing = self.trailing_reach(side, swing.is_some());
+        let sample_poses = self.pelvis_poses(&samples);
+        let trailing_poses = trailing.as_ref().map_or_else(Vec::new, |t| self.pelvis_poses(&t.phases));
         let mut dropped = 0.0;
         for _ in 0..6 {
             let mut deficits: Vec<(f64, f64)> = Vec::with_capacity(samples.len() + 9);
             if let Some(t) = &trailing {
-                deficits.extend(t.phases.iter().filter_map(|&phase| {
-                    let hip = self.pelvis_at(phase).hip(side.other().sign());
-                    t.deficit(hip, limit, &r).map(|d| (phase, d))
+                deficits.extend(t.phases.iter().zip(&trailing_poses).filter_map(|(&phase, pose)| {
+                    let hip = self.rekeyed_hip(pose, phase, side.other().sign());
+                    t.deficit(hip, limit).map(|d| (phase, d))
                 }));
             }
-            for &phase in &samples {
-                let hip = self.pelvis_at(phase).hip(side.sign());
+            for (&phase, pose) in samples.iter().zip(&sample_poses) {
+                let hip = self.rekeyed_hip(pose, phase, side.sign());
                 let ankle = match swing {
                     Some(plan) if phase < strike_phase => {
                         let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
@@ -403,6 +405,21 @@ impl Walker {
             }
         }
         dropped
+    }
+
+    /// The pelvis at each of `phases`, for [`Self::rekeyed_hip`].
+    fn pelvis_poses(&self, phases: &[f64]) -> Vec<PelvisPose> {
+        phases.iter().map(|&phase| self.pelvis_at(phase)).collect()
+    }
+
+    /// The hip of side `side_sign` at `phase`, `pose` being the pelvis there before the
+    /// guard moved keys. Moving keys changes the pelvis's path only, not its sway or
+    /// rotations, so only the path is evaluated again: the same numbers as a whole
+    /// [`Walker::pelvis_at`], without its four angle curves and three rotations on each of
+    /// the guard's up to six passes.
+    fn rekeyed_hip(&self, pose: &PelvisPose, phase: f64, side_sign: f64) -> DVec3 {
+        let (x, y) = self.pelvis_position_with_plan(&self.plan, phase);
+        PelvisPose { position: DVec3::new(x, y, pose.position.z), ..*pose }.hip(side_sign)
     }
 
     /// Of the movable keys (the newest double support and mid-stance: an older one may be
@@ -446,7 +463,14 @@ impl Walker {
         };
         let (from, to) = (leg.cycle_start + r.heel_rise, leg.cycle_start + r.toe_off);
         let phases = (0..=8).map(|i| from + (to - from) * f64::from(i) / 8.0).collect();
-        Some(TrailingReach { ball, footfall: ff, phases })
+        // The ankle at each heel-rise angle depends on the foot alone, not on the hip the
+        // guard tries: worked out once here, not for every phase of every pass (those
+        // quaternions were a quarter of a step's planning instructions).
+        let ankles = std::array::from_fn(|i| {
+            let angle = MAX_HEEL_RISE * i as f64 / (TRAILING_ANGLES - 1) as f64;
+            ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * r.dims.ball_local()
+        });
+        Some(TrailingReach { phases, ankles })
     }
 
     /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
@@ -458,14 +482,30 @@ impl Walker {
         let dims = &r.dims;
         let limit = r.reach_margin * dims.leg_reach();
         let span = 1.0 - r.toe_off;
+        let sample_s = |i: usize| (i as f64 + 0.5) / SWING_SAMPLES as f64;
+        // A pass changes only the heel-height curve, and a raise moves it only near the
+        // sample that asked: the pelvis is the same in every pass, and a sample whose heel
+        // height came out bit for bit as before has the same target and pose as before (on
+        // the default walk about four passes ran, each solving all fifty samples again).
+        let hips: [DVec3; SWING_SAMPLES] =
+            std::array::from_fn(|i| self.pelvis_at(toe_off_phase + sample_s(i) * span).hip(side.sign()));
+        let mut solved: [Option<SolvedSample>; SWING_SAMPLES] = [None; SWING_SAMPLES];
         for _pass in 0..8 {
             let mut raised = false;
             let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
             for i in 0..SWING_SAMPLES {
-                let s = (i as f64 + 0.5) / SWING_SAMPLES as f64;
-                let pelvis = self.pelvis_at(toe_off_phase + s * span);
-                let hip = pelvis.hip(side.sign());
-                let target = swing_target(plan, s, side, r, hip);
+                let s = sample_s(i);
+                let hip = hips[i];
+                let heel_height = plan.heel_height.eval(s);
+                let sample = match solved[i] {
+                    Some(sample) if sample.heel_height.to_bits() == heel_height.to_bits() => sample,
+                    _ => {
+                        let target = swing_target(plan, s, side, r, hip);
+                        SolvedSample { heel_height, target, pose: None }
+                    }
+                };
+                solved[i] = Some(sample);
+                let target = sample.target;
                 // Out of reach: lift the heel until the ankle is back inside the sphere.
                 let d = hip - target.ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();
@@ -480,7 +520,8 @@ impl Walker {
                 }
                 // Too close to the ground: clearance ramps in over the first and out over the
                 // last 15 % of the swing, where the foot leaves and meets the ground.
-                let pose = solve_leg(r, hip, target);
+                let pose = sample.pose.unwrap_or_else(|| solve_leg(r, hip, target));
+                solved[i] = Some(SolvedSample { pose: Some(pose), ..sample });
                 let needed = r.clearance * (s / 0.15).min((1.0 - s) / 0.15).min(1.0);
                 let ground_heel = self.terrain.height(pose.heel.x);
                 let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
@@ -507,23 +548,35 @@ impl Walker {
 
 /// A trailing leg in (or coming to) heel rise: the toe joint it turns about and the instants
 /// to check.
+/// One sample of the swing simulation as a pass left it: the heel height it was solved at,
+/// its target, and its leg pose once solved (a sample lifted for reach is not).
+#[derive(Clone, Copy)]
+struct SolvedSample {
+    heel_height: f64,
+    target: LegTarget,
+    pose: Option<LegPose>,
+}
+
+/// Heel-rise angles the trailing foot is tried at, from flat to [`MAX_HEEL_RISE`].
+const TRAILING_ANGLES: usize = 30;
+
 struct TrailingReach {
-    ball: DVec3,
-    footfall: Footfall,
     phases: Vec<f64>,
+    /// The ankle at each of the [`TRAILING_ANGLES`] heel-rise angles, the foot turning about
+    /// its toe joint.
+    ankles: [DVec3; TRAILING_ANGLES],
 }
 
 impl TrailingReach {
     /// How far `hip` is above the highest point from which the leg still reaches its foot at
     /// some heel-rise angle up to [`MAX_HEEL_RISE`] (m); `None` if it reaches, or if no
     /// lowering would help (the foot is too far behind).
-    fn deficit(&self, hip: DVec3, limit: f64, r: &crate::model::params::Resolved) -> Option<f64> {
-        let ff = &self.footfall;
-        let allowed = (0..=29)
-            .map(|i| MAX_HEEL_RISE * f64::from(i) / 29.0)
-            .filter_map(|angle| {
-                let ankle = self.ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * r.dims.ball_local();
-                let d = hip - ankle;
+    fn deficit(&self, hip: DVec3, limit: f64) -> Option<f64> {
+        let allowed = self
+            .ankles
+            .iter()
+            .filter_map(|ankle| {
+                let d = hip - *ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();
                 (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
             })
