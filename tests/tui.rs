@@ -703,3 +703,49 @@ fn the_optimisers_rerun_row_says_what_it_is() {
         }
     }
 }
+
+/// On the wide screen the panel the keys go to has its border drawn in the focus style, and
+/// only that one; `tab` moves it.
+#[test]
+fn the_wide_screen_marks_the_focused_panel_border() {
+    let mut app = walked(None, 30);
+    let focused_corners = |app: &App| {
+        let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+        terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
+        let buffer = terminal.backend().buffer().clone();
+        let style = ui::FOCUS_BORDER;
+        let mut corners: Vec<(u16, u16)> = Vec::new();
+        for y in 0..48 {
+            for x in 0..160 {
+                let cell = &buffer[(x, y)];
+                if cell.symbol() == "┌" && cell.fg == style.fg.unwrap() && cell.modifier.contains(style.add_modifier)
+                {
+                    corners.push((x, y));
+                }
+            }
+        }
+        // Every border cell of the marked panel carries the style: its top-right corner too.
+        corners
+    };
+    assert_eq!(app.panel, Panel::Editor);
+    let editor = focused_corners(&app);
+    assert_eq!(editor.len(), 1, "one marked panel: {editor:?}");
+    // The editor is the right-hand column.
+    assert!(editor[0].0 > 100, "{editor:?}");
+    key(&mut app, KeyCode::Tab);
+    assert_eq!(app.panel, Panel::Curves);
+    let curves = focused_corners(&app);
+    assert_eq!(curves.len(), 1, "{curves:?}");
+    assert!((60..110).contains(&curves[0].0) && curves[0].1 == 0, "the curve chart, middle top: {curves:?}");
+    // The narrow screen has tabs instead, and no marked border.
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).unwrap();
+    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer();
+    let marked = (0..24)
+        .flat_map(|y| (0..80).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            buffer[(x, y)].modifier.contains(ratatui::style::Modifier::BOLD) && buffer[(x, y)].symbol() == "┌"
+        })
+        .count();
+    assert_eq!(marked, 0);
+}

@@ -82,6 +82,13 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
         curves::draw_curves(f, curve_area, app, marker);
         panels::draw_optimiser(f, optimiser, app, marker);
         panels::draw_editor(f, right, app);
+        let focused = match app.panel {
+            Panel::Editor => right,
+            Panel::Curves => curve_area,
+            Panel::Joints => joints,
+            Panel::Optimiser => optimiser,
+        };
+        mark_focus(f, focused);
     } else {
         let [walk_area, side] =
             Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(main);
@@ -105,6 +112,32 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
     }
     panels::draw_status(f, status, app);
     panels::draw_overlay(f, area, app);
+}
+
+/// The style of the border of the panel the keys go to.
+pub const FOCUS_BORDER: Style = Style::new().fg(Color::Yellow).add_modifier(Modifier::BOLD);
+
+/// Draws the border of `area` in [`FOCUS_BORDER`]. On the narrow screen the tab bar says
+/// which panel the keys (arrows, enter, `<`/`>`) go to; on the wide one every panel is drawn
+/// alike, and a newcomer pressing an arrow could not tell whether it would move a parameter
+/// or a curve's point.
+fn mark_focus(f: &mut Frame, area: Rect) {
+    let area = area.intersection(f.area());
+    if area.width < 2 || area.height < 2 {
+        return;
+    }
+    let buf = f.buffer_mut();
+    let (right, bottom) = (area.right() - 1, area.bottom() - 1);
+    for x in area.left()..=right {
+        for y in [area.top(), bottom] {
+            buf[(x, y)].set_style(FOCUS_BORDER);
+        }
+    }
+    for y in area.top()..=bottom {
+        for x in [area.left(), right] {
+            buf[(x, y)].set_style(FOCUS_BORDER);
+        }
+    }
 }
 
 fn curve_area_of(middle: Rect) -> Rect {
