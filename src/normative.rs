@@ -252,6 +252,10 @@ pub struct Comparison {
     /// Cadence and stride norms at the walk's speed (the built-in table by speed; no stance
     /// norm by speed is available).
     pub spatiotemporal_norms: NormsAtSpeed,
+    /// The part of the walk compared, for a walk that was not steady throughout (its pace
+    /// changed or it stopped): the plateau the snapshot measured
+    /// ([`crate::report::metrics::steady_window`]); `None` for a walk steady throughout.
+    pub steady_part: Option<String>,
 }
 
 fn extreme(points: &[(f64, f64)], larger: bool) -> (f64, f64) {
@@ -339,7 +343,14 @@ pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comp
         ("stance_pct", figure("stance_pct")),
     ];
     let spatiotemporal_norms = SpeedNorms::built_in().at(speed_mps);
-    Comparison { speed_mps, reference_speed_mps: reference.speed_mps, curves, spatiotemporal, spatiotemporal_norms }
+    Comparison {
+        speed_mps,
+        reference_speed_mps: reference.speed_mps,
+        curves,
+        spatiotemporal,
+        spatiotemporal_norms,
+        steady_part: walk.steady_part.clone(),
+    }
 }
 
 #[cfg(test)]

@@ -454,7 +454,13 @@ fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let md = read(&dir, "summary.md");
     let pace = &md[md.find("## Pace").expect("a Pace section")..];
-    let events: Vec<&str> = pace.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| time")).collect();
+    // The events' table: the section's first, up to the blank line after it.
+    let events: Vec<&str> = pace
+        .lines()
+        .skip_while(|l| !l.starts_with("| time"))
+        .take_while(|l| l.starts_with('|'))
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| time"))
+        .collect();
     let kinds: Vec<&str> = events.iter().map(|l| l.rsplit('|').nth(1).unwrap().trim()).collect();
     assert_eq!(
         kinds,

@@ -9,12 +9,15 @@
 //!   below it;
 //! - **stance %**: frames in which a leg is in one of its three stance phases, over frames;
 //! - **cycle**: heel strike to heel strike of the right leg; the first cycle is start-up.
+//!   A standing walker takes no steps and so has no cycles ([`events`]); which cycles are
+//!   steady, and which are a speed change, a stop or standing, is [`steady`]'s.
 
 pub mod events;
 pub mod frame_cost;
 pub mod ik;
 pub mod ik_tables;
 pub mod recording;
+pub mod steady;
 
 pub use recording::{IkTarget, Keep, Recording, record};
 

@@ -12,7 +12,7 @@ use crate::model::params::WalkParams;
 use crate::model::terrain::Terrain;
 use crate::model::walk::frame::Frame;
 use crate::model::walk::leg::Footfall;
-use crate::model::walk::pace::PaceEvent;
+use crate::model::walk::pace::{PaceEvent, WalkState};
 use crate::model::walk::{Gait, ModelError, StepPlan, Walker, ik_question};
 
 /// One IK question the walk asked.
@@ -73,6 +73,12 @@ pub struct Recording {
     pub(crate) step_problems: Vec<Option<(StepProblem, Gait)>>,
     /// What the pace schedule did (`[[walk.schedule]]`), in order; empty without one.
     pub pace_events: Vec<PaceEvent>,
+    /// What the walker was doing at each frame (walking, stopping, standing, ...): the
+    /// steady parts ([`super::steady`]) count only walking frames as steady.
+    pub states: Vec<WalkState>,
+    /// The speed the walk was asked for at the start (m/s, the config's `walk.speed_mps`):
+    /// the first plateau's, before any `SpeedAsked` event.
+    pub start_speed_mps: f64,
 }
 
 /// Runs `cycles` gait cycles at `fps` frames per second, keeping what `keep` asks for.
@@ -93,12 +99,15 @@ pub fn record(params: &WalkParams, cycles: f64, fps: f64, keep: Keep) -> Result<
         ik_targets: Vec::new(),
         step_problems: Vec::new(),
         pace_events: Vec::new(),
+        states: Vec::with_capacity(count as usize + 1),
+        start_speed_mps: params.walk.speed_mps,
     };
     for i in 0..=count {
         if i > 0 {
             walker.advance(1.0 / fps);
         }
         rec.frames.push(walker.frame(i));
+        rec.states.push(walker.walk_state());
         if keep.poses {
             rec.poses.push(walker.pose().clone());
         }

@@ -33,6 +33,12 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
         c.speed_mps,
         c.reference_speed_mps
     )?;
+    if let Some(part) = &c.steady_part {
+        writeln!(
+            out,
+            "# steady part compared: {part} (the pace changed: the plateau with the most whole gait cycles; speed changes, stopping and standing left out)"
+        )?;
+    }
     let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
     writeln!(out, "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} %")?;
     let n = &c.spatiotemporal_norms;
@@ -110,6 +116,9 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         line["cadence_norm_sd_spm"] = n.cadence_spm.1.into();
         line["stride_length_norm_m"] = n.stride_length_m.0.into();
         line["stride_length_norm_sd_m"] = n.stride_length_m.1.into();
+        if let Some(part) = &c.steady_part {
+            line["steady_part"] = part.as_str().into();
+        }
         writeln!(out, "{line}")?;
     }
     Ok(())

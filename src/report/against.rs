@@ -79,16 +79,25 @@ pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Compariso
         c.speed_mps,
         normative::BUILT_IN_SOURCE,
         c.reference_speed_mps,
-        if compared {
-            format!(" The table is for `{name}`, the report's own walk, not the compared ones.")
-        } else {
-            String::new()
-        },
+        compared_note(name, compared, c),
     );
     for k in &c.curves {
         row(md, k);
     }
     spatiotemporal(md, c);
+}
+
+/// What the table is of, beyond the walk's name: the steady part compared (a walk whose pace
+/// changed), and that compared walks are not in it.
+fn compared_note(name: &str, compared: bool, c: &Comparison) -> String {
+    let mut note = String::new();
+    if let Some(part) = &c.steady_part {
+        let _ = write!(note, " The walk's pace changed: compared on its steady part, {part} (see *Pace*).");
+    }
+    if compared {
+        let _ = write!(note, " The table is for `{name}`, the report's own walk, not the compared ones.");
+    }
+    note
 }
 
 /// The walk's cadence and stride beside the norms at its own speed (the figures

@@ -3,7 +3,11 @@
 //! Definitions, as `summary.json` reports them:
 //! - **steady state**: from the second right heel strike (the first cycle is start-up) to the
 //!   last right heel strike of the run; every figure except the health checks is taken over
-//!   these complete cycles.
+//!   these complete cycles. A walk whose pace changed or that stopped (`[[walk.schedule]]`)
+//!   is measured on one plateau only, its whole cycles: the plateau with the most of them
+//!   ([`steady_window`], [`crate::analysis::steady`]); speed changes, the stop and standing
+//!   are never averaged in. There stride and step width come from the heels at the
+//!   plateau's heel strikes.
 //! - **speed**: pelvis travel over the steady window divided by its duration.
 //! - **cycle, cadence**: mean right heel strike to right heel strike time; cadence = 120/cycle.
 //! - **stride length**: mean forward distance between consecutive right heel strikes'
@@ -25,7 +29,8 @@
 //!   Over uneven ground "below" follows the terrain under each point at that frame.
 //! - **foot skate, penetration, reach failures, non-finite values**: the walk model's health
 //!   checks ([`crate::analysis::checks`]) over every frame, start-up included.
-//! - **optimiser**: steps decided in the steady window, the mean chosen cost, and the steps
+//! - **optimiser**: steps decided in the steady window (their toe-off after its first frame and
+//!   by its last), the mean chosen cost, and the steps
 //!   where no candidate was feasible; `optimiser_fixed_rule_mean_cost` gives the fixed rule's
 //!   cost on the same steps for comparison.
 
@@ -136,23 +141,99 @@ fn detrended_span(cycle: &[Frame], value: impl Fn(&Frame) -> f64) -> f64 {
     span(cycle.iter().map(|f| value(f) - (v0 + (v1 - v0) * (f.time_s - t0) / (t1 - t0))))
 }
 
-/// The steady-state frame range of a run: `[first, last)` between the second and the last
-/// right heel strike.
-pub fn steady_range(frames: &[Frame]) -> Result<(usize, usize, Vec<usize>), TooShort> {
-    let strikes = crate::analysis::events::heel_strikes(frames, 0);
-    if strikes.len() < 3 {
-        return Err(TooShort(format!(
-            "the walk needs at least 3 right heel strikes to measure a steady cycle; this run has {} (simulate more cycles)",
-            strikes.len()
-        )));
-    }
-    Ok((strikes[1], *strikes.last().expect("checked"), strikes[1..].to_vec()))
+/// Where the steady-state figures are measured: frames `first` to `last`, right heel strike
+/// to right heel strike.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SteadyWindow {
+    /// The first measured cycle's heel strike (frame).
+    pub first: usize,
+    /// The last measured cycle's closing heel strike (frame).
+    pub last: usize,
+    /// Every right heel strike from `first` to `last`: the whole cycles lie between neighbours.
+    pub strikes: Vec<usize>,
+    /// The plateau measured, for a walk that was not steady throughout (a pace schedule
+    /// changed its speed or stopped it); `None`: every cycle after start-up.
+    pub plateau: Option<SteadyPlateau>,
 }
 
-/// Measures `run`.
+/// The plateau a walk's steady-state figures were measured on ([`analysis::steady`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SteadyPlateau {
+    /// The speed asked for on it (m/s).
+    pub asked_mps: f64,
+    /// Its first measured heel strike (s).
+    pub from_s: f64,
+    /// Its last measured heel strike (s).
+    pub to_s: f64,
+    /// Whole gait cycles measured.
+    pub cycles: usize,
+}
+
+impl SteadyPlateau {
+    /// As the outputs name it: "5.33–8.27 s, the 1.60 m/s plateau, 3 cycles".
+    #[must_use]
+    pub fn describe(&self) -> String {
+        let plural = if self.cycles == 1 { "" } else { "s" };
+        format!(
+            "{:.2}–{:.2} s, the {:.2} m/s plateau, {} cycle{plural}",
+            self.from_s, self.to_s, self.asked_mps, self.cycles
+        )
+    }
+}
+
+/// The steady window of a run: a walk steady throughout is measured from its second to its
+/// last right heel strike (the first cycle is start-up, and the first whole one is left out
+/// too, as the figures always have); a walk whose pace changed or that stopped, over the
+/// whole cycles of its plateau with the most of them
+/// ([`analysis::steady::measured_plateau`]): speed changes, stopping and standing are never
+/// averaged in.
+pub fn steady_window(run: &Run) -> Result<SteadyWindow, TooShort> {
+    let parts = analysis::steady::parts(run);
+    let throughout = analysis::steady::steady_throughout(&parts);
+    let plateau = analysis::steady::measured_plateau(&parts).ok_or_else(|| too_short(run, &parts))?;
+    let strikes = if throughout { &plateau.strikes[1..] } else { &plateau.strikes[..] };
+    if strikes.len() < 2 {
+        return Err(too_short(run, &parts));
+    }
+    let (first, last) = (strikes[0], strikes[strikes.len() - 1]);
+    let described = SteadyPlateau {
+        asked_mps: plateau.asked_mps,
+        from_s: run.frames[first].time_s,
+        to_s: run.frames[last].time_s,
+        cycles: strikes.len() - 1,
+    };
+    Ok(SteadyWindow { first, last, strikes: strikes.to_vec(), plateau: (!throughout).then_some(described) })
+}
+
+fn too_short(run: &Run, parts: &[analysis::steady::Part]) -> TooShort {
+    if analysis::steady::steady_throughout(parts) {
+        let strikes = crate::analysis::events::heel_strikes(&run.frames, 0).len();
+        return TooShort(format!(
+            "the walk needs at least 3 right heel strikes to measure a steady cycle; this run has {strikes} (simulate more cycles)"
+        ));
+    }
+    let longest = parts
+        .iter()
+        .filter(|p| p.kind == analysis::steady::PartKind::Plateau)
+        .map(|p| p.span_s(&run.frames))
+        .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)));
+    TooShort(format!(
+        "no steady plateau of the walk's pace holds a whole gait cycle (the longest: {}); lengthen a plateau of \
+         `[[walk.schedule]]` or simulate more cycles",
+        longest.map_or_else(|| "none".into(), |(a, b)| format!("{a:.2}–{b:.2} s"))
+    ))
+}
+
+/// Measures `run` over its steady window ([`steady_window`]).
 pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
+    Ok(summarise_window(run, &steady_window(run)?))
+}
+
+/// Measures `run` over `window`.
+#[must_use]
+pub fn summarise_window(run: &Run, window: &SteadyWindow) -> Summary {
     let frames = &run.frames;
-    let (first, last, strikes) = steady_range(frames)?;
+    let (first, last, strikes) = (window.first, window.last, &window.strikes);
     let steady = &frames[first..last];
     let cycles: Vec<&[Frame]> = strikes.windows(2).map(|w| &frames[w[0]..w[1]]).collect();
     let t0 = frames[first].time_s;
@@ -172,15 +253,19 @@ pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
             .fold(0.0, f64::max)
     };
     let (min_toe, max_heel) = swing_clearances(steady);
-    let (stride, width) = footfall_spacing(run, frames[last].pelvis.x);
+    let (stride, width) = match window.plateau {
+        None => footfall_spacing(run, frames[last].pelvis.x),
+        Some(_) => strike_spacing(frames, window),
+    };
     let checks = analysis::checks(frames);
-    // Steps decided inside the steady window (by the master phase of their toe-off).
-    let master_at = |i: usize| frames[i].time_s / run.cycle_s;
+    // Steps decided inside the steady window: each plan is made at a toe-off, in order (a
+    // walk whose pace changed has no one cycle duration to turn a plan's phase into time).
+    let toe_offs = crate::analysis::events::toe_offs(frames);
     let steps: Vec<_> =
-        run.step_plans.iter().filter(|p| p.phase >= master_at(first) && p.phase < master_at(last)).collect();
+        run.step_plans.iter().zip(toe_offs).filter(|&(_, j)| j > first && j <= last).map(|(p, _)| p).collect();
     let chosen: Vec<f64> = steps.iter().filter_map(|p| p.optimisation.chosen.cost).collect();
     let fixed: Vec<f64> = steps.iter().filter_map(|p| p.optimisation.fixed_rule.cost).collect();
-    Ok(Summary {
+    Summary {
         speed_mps: (frames[last].pelvis.x - frames[first].pelvis.x) / (t1 - t0),
         cadence_spm: 120.0 / cycle_s,
         stride_length_m: stride,
@@ -216,7 +301,7 @@ pub fn summarise(run: &Run) -> Result<Summary, TooShort> {
         optimiser_mean_cost: mean(chosen),
         optimiser_infeasible_steps: steps.iter().filter(|p| p.optimisation.fallback).count() as u64,
         optimiser_fixed_rule_mean_cost: mean(fixed),
-    })
+    }
 }
 
 /// The swing foot's lowest toe clearance in mid-swing and highest heel clearance over the
@@ -238,6 +323,24 @@ fn swing_clearances(steady: &[Frame]) -> (f64, f64) {
         .map(|l| (l.heel.y - l.ground_under_heel) * 100.0)
         .fold(f64::NEG_INFINITY, f64::max);
     (min_toe, max_heel)
+}
+
+/// Stride length and step width (m) on a plateau, from the heels at its heel strikes: the
+/// right heel's travel from strike to strike, and the sideways distance between the heels
+/// of consecutive strikes of opposite feet. (The footfalls a planned walk lists carry no
+/// time, and a plateau between pace changes is too short to leave any out as start-up.)
+fn strike_spacing(frames: &[Frame], window: &SteadyWindow) -> (f64, f64) {
+    let stride = mean(window.strikes.windows(2).map(|w| frames[w[1]].legs[0].heel.x - frames[w[0]].legs[0].heel.x));
+    let struck: Vec<(usize, f64)> = crate::analysis::events::steps(frames)
+        .into_iter()
+        .filter(|s| (window.first..=window.last).contains(s))
+        .map(|s| {
+            let side = usize::from(!crate::analysis::events::is_heel_strike(&frames[s - 1], &frames[s], 0));
+            (side, frames[s].legs[side].heel.z)
+        })
+        .collect();
+    let width = mean(struck.windows(2).filter(|w| w[0].0 != w[1].0).map(|w| (w[1].1 - w[0].1).abs()));
+    (stride, width)
 }
 
 /// Stride length and step width (m) from the footfalls landed in the steady window: past

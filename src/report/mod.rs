@@ -89,7 +89,9 @@ pub fn write_report(
     // figure take its poses, the optimisation plot its middle step's problem.
     let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)?;
     let ik_targets = &run.ik_targets;
-    let summary = metrics::summarise(&run)?;
+    let window = metrics::steady_window(&run)?;
+    let steady = window.plateau;
+    let summary = metrics::summarise_window(&run, &window);
     let normative = against::compare(&input.name, input.cycles, &run, &summary)?;
     let mut others = Vec::new();
     for (name, params) in &input.compare {
@@ -146,7 +148,7 @@ pub fn write_report(
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
         let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
-        let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip);
+        let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip, steady.as_ref());
         pace::section(&mut md, &run);
         write("summary.md", &md)?;
         Ok(())
@@ -270,8 +272,12 @@ fn summary_md(
     normative: &crate::normative::Comparison,
     ik: &IkRows<'_>,
     clip: &plots::animation::Clip,
+    steady: Option<&metrics::SteadyPlateau>,
 ) -> String {
     let mut md = summary_intro(input, others);
+    if let Some(plateau) = steady {
+        pace::headline(&mut md, plateau);
+    }
     figures_table(&mut md, input, s, others);
     against::section(&mut md, &input.name, !others.is_empty(), normative);
     ik_table(&mut md, input, ik.summaries);

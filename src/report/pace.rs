@@ -1,9 +1,13 @@
 //! A scheduled walk's pace in the report (`[[walk.schedule]]`): `plots/speed.{png,svg}`, the
 //! pelvis's forward speed over time with the schedule's events marked, and a *Pace* section
-//! in `summary.md` listing the events. Written only for a walk whose schedule did something.
+//! in `summary.md` listing the events, each plateau's figures and the transitions
+//! ([`crate::analysis::steady`]). Written only for a walk whose schedule did something.
 
+use super::metrics::SteadyPlateau;
 use super::plots::{Figure, Line, Panel, write_figure};
 use crate::analysis::Run;
+use crate::analysis::steady::{self, Part, PartKind};
+use crate::model::walk::frame::Frame;
 use crate::model::walk::pace::PaceEventKind;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -90,8 +94,22 @@ pub(crate) fn write_speed_plot(dir: &Path, name: &str, run: &Run, start_mps: f64
     Ok(true)
 }
 
-/// The *Pace* section of `summary.md`: each event with its time, and what the figures above
-/// were measured over.
+/// The sentence `summary.md` opens its figures with for a walk that was not steady
+/// throughout: which part they were measured on.
+pub(crate) fn headline(md: &mut String, plateau: &SteadyPlateau) {
+    let _ = writeln!(
+        md,
+        "Steady part: {}. The walk's pace changed, so the figures below (and *Against measured gait*) are \
+         measured on that plateau's whole gait cycles only, the plateau with the most of them; speed changes, \
+         stopping and standing are never averaged in (every part is listed in *Pace* at the end). The health \
+         checks (foot skate, penetration, reach failures, non-finite values) cover every frame.\n",
+        plateau.describe()
+    );
+}
+
+/// The *Pace* section of `summary.md`: each event with its time, a row per plateau with its
+/// figures over its whole steps, the transitions, and which part the figures above were
+/// measured on.
 pub(crate) fn section(md: &mut String, run: &Run) {
     if run.pace_events.is_empty() {
         return;
@@ -102,14 +120,48 @@ pub(crate) fn section(md: &mut String, run: &Run) {
     for e in &run.pace_events {
         let _ = writeln!(md, "| {:.2} | {} |", e.time_s, label(e.kind));
     }
-    let _ = writeln!(
-        md,
-        "\nThe figures above are measured over every cycle after the first, so they mix the schedule's \
-         plateaus{}: [speed](plots/{SPEED_PLOT}.png) ([svg](plots/{SPEED_PLOT}.svg)) shows the pace over time.",
-        if run.pace_events.iter().any(|e| e.kind == PaceEventKind::Standing) {
-            ", the stop and the standing"
-        } else {
-            ""
-        }
+    let parts = steady::parts(run);
+    plateau_table(md, run, &parts);
+    transition_table(md, &run.frames, &parts);
+    let _ = writeln!(md, "\n[speed](plots/{SPEED_PLOT}.png) ([svg](plots/{SPEED_PLOT}.svg)) shows the pace over time.");
+}
+
+/// A row per plateau: asked and walked speed, cadence, stride and stance over its whole
+/// steps, the time from its first to its last step's heel strike, the steps and the whole
+/// right gait cycles in it, and which one the figures above were measured on.
+fn plateau_table(md: &mut String, run: &Run, parts: &[Part]) {
+    md.push_str(
+        "\nA plateau is steady from the step after its speed was reached to the next speed or stop asked. Each \
+         is measured here over its whole steps (heel strike to heel strike, either foot), so that one shorter \
+         than a gait cycle still shows its pace; the figures at the top over the whole right gait cycles of \
+         the one marked *measured* (the plateau with the most of them).\n\n\
+         | plateau | asked (m/s) | walked (m/s) | cadence (steps/min) | stride (m) | stance (%) | time (s) | steps | cycles |\n\
+         |---|---:|---:|---:|---:|---:|---|---:|---:|\n",
     );
+    let measured = steady::measured_plateau(parts).map(|m| m.first);
+    let plateaus = parts.iter().filter(|p| p.kind == PartKind::Plateau);
+    for (n, p) in plateaus.enumerate() {
+        let name = format!("{}{}", n + 1, if measured == Some(p.first) { ", measured" } else { "" });
+        let figures = match steady::step_figures(&run.frames, p) {
+            Some(f) => format!(
+                "{:.3} | {:.1} | {:.3} | {:.1} | {:.2}–{:.2}",
+                f.speed_mps, f.cadence_spm, f.stride_m, f.stance_pct, f.span_s.0, f.span_s.1
+            ),
+            None => {
+                let (a, b) = p.span_s(&run.frames);
+                format!("— | — | — | — | {a:.2}–{b:.2}")
+            }
+        };
+        let _ = writeln!(md, "| {name} | {:.2} | {figures} | {} | {} |", p.asked_mps, p.whole_steps(), p.cycles());
+    }
+}
+
+/// The transitions: start-up, speed changes, stopping, standing (any part but a plateau),
+/// with their times.
+fn transition_table(md: &mut String, frames: &[Frame], parts: &[Part]) {
+    md.push_str("\nTransitions, not averaged into any figure:\n\n| part | time (s) | asked (m/s) |\n|---|---|---:|\n");
+    for p in parts.iter().filter(|p| p.kind != PartKind::Plateau) {
+        let (a, b) = p.span_s(frames);
+        let _ = writeln!(md, "| {} | {a:.2}–{b:.2} | {:.2} |", p.kind.name(), p.asked_mps);
+    }
 }

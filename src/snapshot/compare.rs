@@ -147,6 +147,7 @@ mod tests {
             fps: 60.0,
             summary: vec![("speed_mps".into(), speed), ("reach_failures".into(), 0.0)],
             curves: vec![("knee_flex_r_deg".into(), vec![0.0, knee, 1.0])],
+            steady_part: None,
         }
     }
 

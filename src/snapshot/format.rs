@@ -25,6 +25,9 @@ pub fn render(s: &Snapshot) -> String {
     let _ = writeln!(out, "  \"gaitlab_snapshot\": {FORMAT},");
     let _ = writeln!(out, "  \"config\": {},", quote(&s.config));
     let _ = writeln!(out, "  \"sim\": {{\n    \"cycles\": {},\n    \"fps\": {}\n  }},", s.cycles, s.fps);
+    if let Some(part) = &s.steady_part {
+        let _ = writeln!(out, "  \"steady_part\": {},", quote(part));
+    }
     let summary: Vec<String> =
         s.summary.iter().map(|(key, x)| format!("    {}: {}", quote(key), number_text(key, *x))).collect();
     let _ = writeln!(out, "  \"summary\": {{\n{}\n  }},", summary.join(",\n"));
@@ -81,6 +84,7 @@ pub fn parse(text: &str, label: &str) -> Result<Snapshot, ConfigErrors> {
         fps: value["sim"]["fps"].as_f64().unwrap_or(f64::NAN),
         summary,
         curves,
+        steady_part: value["steady_part"].as_str().map(str::to_string),
     })
 }
 
@@ -96,6 +100,7 @@ mod tests {
             fps: 59.94,
             summary: vec![("speed_mps".into(), 1.3), ("reach_failures".into(), 0.0), ("x_deg".into(), -0.00001)],
             curves: CURVES.iter().map(|c| ((*c).to_string(), vec![1.23456, -2.0])).collect(),
+            steady_part: None,
         }
     }
 

@@ -42,6 +42,10 @@ pub struct Snapshot {
     pub summary: Vec<(String, f64)>,
     /// The mean joint curves ([`CURVES`], [`POINTS`] each).
     pub curves: Vec<(String, Vec<f64>)>,
+    /// Which part of the walk the figures and curves were measured on, for a walk that was
+    /// not steady throughout (its pace changed or it stopped): "5.33–8.27 s, the 1.60 m/s
+    /// plateau, 3 cycles"; `None` (and not written) for a walk steady throughout.
+    pub steady_part: Option<String>,
 }
 
 /// The kind of figure `key` (its tolerance and rounding); a key without a known unit is
@@ -82,7 +86,8 @@ pub fn recorded(path: &Path, cycles: u32, run: &Run, summary: &Summary) -> Resul
             ((*key).to_string(), kind_of(key).round(x))
         })
         .collect();
-    let curves = mean_curves(&run.frames).map_err(too_short)?;
+    let window = metrics::steady_window(run).map_err(too_short)?;
+    let curves = mean_curves(&run.frames, &window.strikes);
     Ok(Snapshot {
         config: path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
         cycles,
@@ -93,6 +98,7 @@ pub fn recorded(path: &Path, cycles: u32, run: &Run, summary: &Summary) -> Resul
             .zip(curves)
             .map(|(name, points)| ((*name).to_string(), points.iter().map(|&x| Kind::Angle.round(x)).collect()))
             .collect(),
+        steady_part: window.plateau.map(|p| p.describe()),
     })
 }
 
@@ -113,9 +119,8 @@ fn curve_value(f: &Frame, c: usize) -> f64 {
 }
 
 /// Each of [`CURVES`] at [`POINTS`] points of the right gait cycle (linear between frames),
-/// the mean over the steady cycles (those the summary measures).
-fn mean_curves(frames: &[Frame]) -> Result<Vec<Vec<f64>>, TooShort> {
-    let (_, _, strikes) = metrics::steady_range(frames)?;
+/// the mean over the steady cycles (those the summary measures: heel strikes `strikes`).
+fn mean_curves(frames: &[Frame], strikes: &[usize]) -> Vec<Vec<f64>> {
     let mut sums = vec![vec![0.0; POINTS]; CURVES.len()];
     for w in strikes.windows(2) {
         let (t0, t1) = (frames[w[0]].time_s, frames[w[1]].time_s);
@@ -133,5 +138,5 @@ fn mean_curves(frames: &[Frame]) -> Result<Vec<Vec<f64>>, TooShort> {
         }
     }
     let cycles = (strikes.len() - 1) as f64;
-    Ok(sums.into_iter().map(|sum| sum.into_iter().map(|x| x / cycles).collect()).collect())
+    sums.into_iter().map(|sum| sum.into_iter().map(|x| x / cycles).collect()).collect()
 }

@@ -4,6 +4,7 @@
 use crate::analysis::Run;
 use crate::analysis::events as gait_events;
 use crate::model::walk::frame::Frame;
+use crate::report::metrics::{self, SteadyWindow};
 
 /// A quantity over the gait cycle: mean, min and max at each percent.
 pub(crate) struct Cycle {
@@ -23,16 +24,24 @@ pub(crate) struct Data<'a> {
     pub(crate) events: Vec<(&'static str, f64)>,
 }
 
-/// Steady heel strikes of `side`: the start-up cycle's first strike dropped.
-fn strikes_of(frames: &[Frame], side: usize) -> Vec<usize> {
-    gait_events::heel_strikes(frames, side).into_iter().skip(1).collect()
+/// Steady heel strikes of `side`: the start-up cycle's first strike dropped; for a walk
+/// whose pace changed, those on the plateau its figures are measured on
+/// ([`metrics::steady_window`]), so that the cycle plots draw what the figures measure.
+fn strikes_of(run: &Run, side: usize) -> Vec<usize> {
+    let all = gait_events::heel_strikes(&run.frames, side);
+    match metrics::steady_window(run) {
+        Ok(SteadyWindow { plateau: Some(_), first, last, .. }) => {
+            all.into_iter().filter(|s| (first..=last).contains(s)).collect()
+        }
+        _ => all.into_iter().skip(1).collect(),
+    }
 }
 
 impl<'a> Data<'a> {
     /// Prepares `run`.
     pub(crate) fn new(run: &'a Run) -> Data<'a> {
         let frames = &run.frames;
-        let strikes = [strikes_of(frames, 0), strikes_of(frames, 1)];
+        let strikes = [strikes_of(run, 0), strikes_of(run, 1)];
         let right = &strikes[0];
         let mut events = Vec::new();
         let pct_of = |pred: &dyn Fn(&Frame, &Frame) -> bool| {

@@ -1,0 +1,204 @@
+//! Steady-state figures on the steady part only (issue 14, point 5): a scheduled walk's
+//! plateaus are measured apart from its speed changes, stop and standing; standing has no
+//! cycles; the report's *Pace* table has a row per plateau with those figures and the
+//! headline names the part measured; `gaitlab compare` says which part it compared; a walk
+//! without a schedule is one steady part and its snapshot bytes are unchanged.
+
+use gaitlab::analysis::steady::{self, Part, PartKind};
+use gaitlab::analysis::{self, Run};
+use gaitlab::model::walk::pace::{PaceEventKind, WalkState};
+use gaitlab::report::metrics;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// 0.8 m/s, 1.6 from 6 s, 1.0 from 12 s, a stop at 18 s: plateaus long enough for whole
+/// gait cycles, then about 2.5 s standing.
+const SCHEDULED: &str = "[walk]\nspeed_mps = 0.8\n\n\
+    [[walk.schedule]]\ntime_s = 6.0\nspeed_mps = 1.6\n\n\
+    [[walk.schedule]]\ntime_s = 12.0\nspeed_mps = 1.0\n\n\
+    [[walk.schedule]]\ntime_s = 18.0\nstop = true\n";
+const CYCLES: u32 = 16;
+const ASKED: [f64; 3] = [0.8, 1.6, 1.0];
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gaitlab-steady-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn gaitlab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_gaitlab")).args(args).current_dir(env!("CARGO_MANIFEST_DIR")).output().unwrap()
+}
+
+/// The scheduled config written to `dir`, and its walk.
+fn scheduled(dir: &Path) -> (PathBuf, Run) {
+    let path = dir.join("scheduled.toml");
+    std::fs::write(&path, SCHEDULED).unwrap();
+    let params = gaitlab::config::load(&path, &[]).unwrap();
+    let run = analysis::run(&params, f64::from(CYCLES), params.sim.fps).unwrap();
+    (path, run)
+}
+
+fn plateaus(parts: &[Part]) -> Vec<&Part> {
+    parts.iter().filter(|p| p.kind == PartKind::Plateau).collect()
+}
+
+#[test]
+fn each_plateau_is_measured_after_its_speed_was_reached_and_within_3_percent() {
+    let dir = temp("plateaus");
+    let (_, run) = scheduled(&dir);
+    let parts = steady::parts(&run);
+    let plateaus = plateaus(&parts);
+    assert_eq!(plateaus.iter().map(|p| p.asked_mps).collect::<Vec<_>>(), ASKED);
+    let reached: Vec<f64> =
+        run.pace_events.iter().filter(|e| matches!(e.kind, PaceEventKind::SpeedReached(_))).map(|e| e.time_s).collect();
+    assert_eq!(reached.len(), 2);
+    for (n, p) in plateaus.iter().enumerate() {
+        let figures = steady::step_figures(&run.frames, p).expect("whole steps on every plateau");
+        let asked = ASKED[n];
+        assert!((figures.speed_mps / asked - 1.0).abs() < 0.03, "plateau {n}: {:.3} m/s of {asked}", figures.speed_mps);
+        assert!(p.cycles() >= 2, "plateau {n}: {} whole cycles", p.cycles());
+        // Over whole cycles, as the headline figures are measured, too.
+        let first = (p.strikes[0], *p.strikes.last().unwrap());
+        let cycle_speed = (run.frames[first.1].pelvis.x - run.frames[first.0].pelvis.x)
+            / (run.frames[first.1].time_s - run.frames[first.0].time_s);
+        assert!((cycle_speed / asked - 1.0).abs() < 0.03, "plateau {n}: {cycle_speed:.3} m/s over cycles");
+        if n > 0 {
+            // After the ramp: later than the heel strike that reached the speed, at the step
+            // after it, and no heel strike between.
+            let from = run.frames[p.first].time_s;
+            assert!(from > reached[n - 1] + 0.1, "plateau {n} from {from:.2} s, reached at {:.2} s", reached[n - 1]);
+            let ramp = &parts[parts.iter().position(|q| q.first == p.first).unwrap() - 1];
+            assert_eq!(ramp.kind, PartKind::SpeedChange);
+            // Both heel strikes that take a step of the ramp are the speed change's, not the
+            // plateau's.
+            assert_eq!(ramp.steps.len(), 2, "heel strikes in the speed change: {:?}", ramp.steps);
+            assert_eq!(p.steps[0], p.first, "a plateau starts at a heel strike");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn standing_after_the_stop_has_no_cycle_and_no_step() {
+    let dir = temp("standing");
+    let (_, run) = scheduled(&dir);
+    let parts = steady::parts(&run);
+    let standing = parts.last().unwrap();
+    assert_eq!(standing.kind, PartKind::NotWalking(WalkState::Standing));
+    let (from, to) = standing.span_s(&run.frames);
+    assert!(to - from > 2.0, "standing {from:.2}-{to:.2} s");
+    // The legs' cycle phases run on while the walker stands (so a phase wrap alone would count
+    // cycles there): both wrap at least once.
+    let stand = &run.frames[standing.first..standing.end];
+    for side in 0..2 {
+        assert!(stand.windows(2).any(|w| w[1].legs[side].phase < w[0].legs[side].phase), "leg {side}");
+    }
+    assert!(standing.strikes.is_empty() && standing.steps.is_empty(), "{:?} {:?}", standing.strikes, standing.steps);
+    let cycles = analysis::cycle_summaries(&run.frames);
+    let last_end: f64 = cycles.iter().map(|c| c.duration_s).sum::<f64>();
+    assert!(last_end <= from + 1e-9, "a cycle ends at {last_end:.2} s, standing from {from:.2} s");
+    // The stop's own parts are transitions, never a plateau: the step under way when it is
+    // asked, the braking step, the closing step and settle.
+    let kinds: Vec<PartKind> = parts.iter().map(|p| p.kind).collect();
+    let stop_kinds = [PartKind::NotWalking(WalkState::Stopping), PartKind::Braking, PartKind::Closing];
+    assert_eq!(kinds[kinds.len() - 4..kinds.len() - 1], stop_kinds, "{kinds:?}");
+    let window = metrics::steady_window(&run).unwrap();
+    let stopping = &parts[parts.len() - 4];
+    assert!(window.last < stopping.first, "measured up to frame {}, stopping from {}", window.last, stopping.first);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Row cells of the *Pace* section's plateau table.
+fn plateau_rows(md: &str) -> Vec<Vec<String>> {
+    let pace = &md[md.find("## Pace").expect("a Pace section")..];
+    pace.lines()
+        .skip_while(|l| !l.starts_with("| plateau |"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| l.trim_matches('|').split('|').map(|c| c.trim().to_string()).collect())
+        .collect()
+}
+
+#[test]
+fn the_report_tables_each_plateau_and_names_the_part_its_figures_are_from() {
+    let dir = temp("report");
+    let (config, run) = scheduled(&dir);
+    let out_dir = dir.join("report");
+    let cycles = CYCLES.to_string();
+    let out = gaitlab(&["report", config.to_str().unwrap(), "--out", out_dir.to_str().unwrap(), "--cycles", &cycles]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let md = std::fs::read_to_string(out_dir.join("summary.md")).unwrap();
+    let rows = plateau_rows(&md);
+    assert_eq!(rows.len(), 3, "{md}");
+    let parts = steady::parts(&run);
+    let plateaus = plateaus(&parts);
+    let most = plateaus.iter().map(|p| p.cycles()).max().unwrap();
+    for ((row, asked), p) in rows.iter().zip(ASKED).zip(&plateaus) {
+        let number = |i: usize| row[i].parse::<f64>().unwrap_or_else(|_| panic!("{row:?}"));
+        assert_eq!(number(1), asked);
+        assert!((number(2) / asked - 1.0).abs() < 0.03, "{row:?}");
+        let f = steady::step_figures(&run.frames, p).unwrap();
+        assert_eq!(
+            row[2..6],
+            [
+                format!("{:.3}", f.speed_mps),
+                format!("{:.1}", f.cadence_spm),
+                format!("{:.3}", f.stride_m),
+                format!("{:.1}", f.stance_pct)
+            ]
+        );
+        let span: Vec<f64> = row[6].split('–').map(|t| t.parse().unwrap()).collect();
+        assert!(span[0] < span[1] && span[1] <= run.frames[p.end - 1].time_s + 0.005, "{row:?}");
+        assert_eq!((row[7].parse::<usize>().unwrap(), row[8].parse::<usize>().unwrap()), (p.whole_steps(), p.cycles()));
+        // The one measured is the one with the most whole cycles (the later on a tie).
+        let measured = row[0].ends_with("measured");
+        assert_eq!(measured, p.cycles() == most && !plateaus.iter().any(|q| q.first > p.first && q.cycles() == most));
+    }
+    let window = metrics::steady_window(&run).unwrap();
+    let part = window.plateau.expect("a scheduled walk names its steady part");
+    let headline = format!("Steady part: {}.", part.describe());
+    assert!(md.contains(&headline), "{headline} missing");
+    for part in ["speed change", "stopping", "braking step", "closing step and settle", "standing"] {
+        assert!(md.contains(&format!("| {part} |")), "{part} missing from the transitions");
+    }
+    // summary.json's speed is the measured plateau's.
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out_dir.join("summary.json")).unwrap()).unwrap();
+    assert!((json["speed_mps"].as_f64().unwrap() / part.asked_mps - 1.0).abs() < 0.03);
+
+    // compare compares the same part, and says so.
+    let out = gaitlab(&["compare", config.to_str().unwrap(), "--set", &format!("sim.cycles={CYCLES}")]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains(&format!("# steady part compared: {}", part.describe())), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_walk_without_a_schedule_is_one_steady_part_and_its_snapshots_keep_their_bytes() {
+    let params = gaitlab::config::load(Path::new("configs/default.toml"), &[]).unwrap();
+    let run = analysis::run(&params, 8.0, params.sim.fps).unwrap();
+    let parts = steady::parts(&run);
+    assert_eq!(parts.iter().map(|p| p.kind).collect::<Vec<_>>(), [PartKind::StartUp, PartKind::Plateau]);
+    let plateau = &parts[1];
+    assert_eq!(plateau.end, run.frames.len(), "the plateau runs to the end");
+    assert_eq!(plateau.first, plateau.strikes[0], "from the first right heel strike");
+    let window = metrics::steady_window(&run).unwrap();
+    assert_eq!(window.plateau, None);
+    assert_eq!(window.strikes, plateau.strikes[1..], "the whole-walk figures leave out the first whole cycle");
+    // Every shipped config's snapshot is, byte for byte, what the walk measures now (the
+    // scheduled pace.toml's included: rewritten on purpose for its steady part).
+    for entry in std::fs::read_dir("configs").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let params = gaitlab::config::load(&path, &[]).unwrap();
+        let snapshot = gaitlab::snapshot::measure::measure(&path, &params).unwrap();
+        let stored = std::fs::read_to_string(path.with_extension("snap.json")).unwrap();
+        assert_eq!(gaitlab::snapshot::format::render(&snapshot), stored, "{}", path.display());
+        assert_eq!(snapshot.steady_part.is_some(), !params.schedule.is_empty(), "{}", path.display());
+    }
+}
