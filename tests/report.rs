@@ -484,8 +484,34 @@ fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
     let svg = read(&dir, "plots/speed.svg");
     let doc = roxmltree::Document::parse(&svg).expect("plots/speed.svg parses");
     let text: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
-    for wanted in ["time (s)", "speed (m/s)", "stop asked", "standing", "walked"] {
+    for wanted in ["time (s)", "speed (m/s)", "stop asked", "standing", "walked", "summary figures measured here"] {
         assert!(text.contains(&wanted), "{wanted} missing from speed.svg");
+    }
+    // Every event label sits above the walked line (they once printed across its ramps):
+    // the label's bottom (its top plus a line of its font) over the line's highest point.
+    let walked_top = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#C81E1E"))
+        .filter_map(|n| n.attribute("points"))
+        .max_by_key(|points| points.len())
+        .expect("the walked line")
+        .split_whitespace()
+        .map(|xy| xy.split(',').nth(1).unwrap().parse::<f64>().unwrap())
+        .fold(f64::INFINITY, f64::min);
+    let events = ["asked", "reached", "braking", "closing", "standing"];
+    let labels: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text") && n.text().is_some_and(|t| events.iter().any(|e| t.trim().ends_with(e))))
+        .collect();
+    assert!(labels.len() >= 7, "{} event labels", labels.len());
+    for label in labels {
+        let top: f64 = label.attribute("y").unwrap().parse().unwrap();
+        let size: f64 = label.attribute("font-size").unwrap().parse().unwrap();
+        assert!(
+            top + 1.2 * size < walked_top,
+            "{:?} at y {top} reaches the walked line's top {walked_top}",
+            label.text()
+        );
     }
     let _ = std::fs::remove_dir_all(&dir);
 

@@ -65,7 +65,13 @@ fn label(kind: PaceEventKind) -> String {
 }
 
 /// Writes `plots/speed.png` and `.svg` when the walk has pace events; false when it has none.
-pub(crate) fn write_speed_plot(dir: &Path, name: &str, run: &Run, start_mps: f64) -> Result<bool, String> {
+pub(crate) fn write_speed_plot(
+    dir: &Path,
+    name: &str,
+    run: &Run,
+    start_mps: f64,
+    steady: Option<&SteadyPlateau>,
+) -> Result<bool, String> {
     if run.pace_events.is_empty() {
         return Ok(false);
     }
@@ -85,7 +91,8 @@ pub(crate) fn write_speed_plot(dir: &Path, name: &str, run: &Run, start_mps: f64
             Line { name: "walked".into(), rgb: (200, 30, 30), width: 3, points: step_mean_speed(run) },
         ],
         band: None,
-        span: None,
+        // The figures of summary.md come from this stretch only: shown where it lies.
+        span: steady.map(|p| (p.from_s, p.to_s, "summary figures measured here".to_string())),
         marks: run.pace_events.iter().map(|e| (e.time_s, label(e.kind))).collect(),
     };
     let figure =

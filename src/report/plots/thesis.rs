@@ -62,6 +62,9 @@ pub(crate) struct Figure {
     pub(crate) panels: Vec<Panel>,
 }
 
+/// The share of a chart's height, at its top, that the marks' four label rows take.
+const MARK_ROWS_SHARE: f64 = 0.24;
+
 /// The band's colour: grey, as the report draws measured adults.
 const BAND: RGBColor = RGBColor(120, 120, 120);
 
@@ -76,6 +79,9 @@ fn panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, p: &Panel) -> Res {
         y if y.end - y.start < 1.0 => (0.5 * (y.start + y.end) - 0.5)..(0.5 * (y.start + y.end) + 0.5),
         y => y,
     };
+    // The marks' labels step down over the top quarter of the chart: that quarter is kept
+    // free of data, or a label printed over a line where an event fell mid-ramp.
+    let y = if p.marks.is_empty() { y } else { y.start..y.start + (y.end - y.start) / (1.0 - MARK_ROWS_SHARE) };
     let span = p.x.end - p.x.start;
     let mut chart = ChartBuilder::on(area)
         .caption(&p.title, (FONT, 28))
@@ -146,7 +152,7 @@ fn marks<DB: DrawingBackend>(
     let mut ink = Vec::new();
     for (i, (x, label)) in marks.iter().enumerate() {
         chart.draw_series(LineSeries::new([(*x, y.start), (*x, y.end)], grey.stroke_width(1))).map_err(err)?;
-        let at = (*x + 0.004 * span, y.end - (0.03 + 0.05 * (i % 4) as f64) * (y.end - y.start));
+        let at = (*x + 0.004 * span, y.end - (0.02 + 0.05 * (i % 4) as f64) * (y.end - y.start));
         chart.draw_series(std::iter::once(Text::new(label.clone(), at, (FONT, 18)))).map_err(err)?;
         ink.push([at, (at.0 + 0.12 * span, at.1)]);
     }
