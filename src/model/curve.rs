@@ -410,13 +410,17 @@ impl Curve {
 pub(crate) struct LiveCurve {
     playing: Curve,
     target: Curve,
+    /// What will play from the next wrap on, while a change is pending: the target with its
+    /// start pinned to where `playing` ends. The planner looks into the next cycle (a step's
+    /// reach is guarded there), and must see that curve, not this cycle's.
+    next: Option<Curve>,
 }
 
 impl LiveCurve {
     /// A live curve that plays `curve`.
     #[must_use]
     pub fn new(curve: Curve) -> Self {
-        LiveCurve { playing: curve.clone(), target: curve }
+        LiveCurve { playing: curve.clone(), target: curve, next: None }
     }
 
     /// Asks for `target` while the cycle is at `x_now`: the segments still to come switch now
@@ -424,21 +428,38 @@ impl LiveCurve {
     pub(crate) fn change_to(&mut self, target: Curve, x_now: f64) {
         self.playing.live_change(&target, x_now);
         self.target = target;
+        self.next = self.after_wrap();
+    }
+
+    /// What the next wrap will play, when it changes anything.
+    fn after_wrap(&self) -> Option<Curve> {
+        (self.playing != self.target).then(|| {
+            let mut next = self.playing.clone();
+            Self::pin_onto(&mut next, &self.target);
+            next
+        })
+    }
+
+    /// `curve` takes `target`'s points with its first point pinned to where `curve` ended,
+    /// the first handle moved with it to keep the slope.
+    fn pin_onto(curve: &mut Curve, target: &Curve) {
+        let end_y = curve.points[curve.points.len() - 1].y;
+        let start_dy = end_y - target.points[0].y;
+        curve.copy_points_from(target);
+        if start_dy != 0.0 {
+            curve.points[0].y += start_dy;
+            curve.points[1].y += start_dy;
+        }
     }
 
     /// Call when the cycle wraps from x = 1 back to 0. The curve's first point is pinned to
     /// where the old one ended, so the wrap is continuous even when an edit arrived in the
     /// last segments of the previous cycle; the first handle moves with it to keep the slope.
+    /// A pinned start differs from the target's, so the change completes at a later wrap.
     pub(crate) fn wrap(&mut self) {
-        if self.playing == self.target {
-            return;
-        }
-        let end_y = self.playing.points[self.playing.points.len() - 1].y;
-        let start_dy = end_y - self.target.points[0].y;
-        self.playing.copy_points_from(&self.target);
-        if start_dy != 0.0 {
-            self.playing.points[0].y += start_dy;
-            self.playing.points[1].y += start_dy;
+        if let Some(next) = self.next.take() {
+            self.playing = next;
+            self.next = self.after_wrap();
         }
     }
 
@@ -446,6 +467,12 @@ impl LiveCurve {
     #[must_use]
     pub fn eval(&self, x: f64) -> f64 {
         self.playing.eval(x)
+    }
+
+    /// y at x of the curve that will play in the next cycle (and the ones after it).
+    #[must_use]
+    pub fn eval_next_cycle(&self, x: f64) -> f64 {
+        self.next.as_ref().unwrap_or(&self.playing).eval(x)
     }
 
     /// The curve being played.

@@ -37,6 +37,9 @@ pub(crate) struct LiveCurves {
     pub(crate) lateral: LiveCurve,
     pub(crate) shoulder: [LiveCurve; 2],
     pub(crate) elbow: [LiveCurve; 2],
+    /// The master cycle the pelvis curves are playing (the integer part of its phase): a
+    /// later phase evaluates what will play then.
+    pub(crate) pelvis_cycle: i64,
 }
 
 impl LiveCurves {
@@ -50,6 +53,7 @@ impl LiveCurves {
             lateral: LiveCurve::new(lateral),
             shoulder: [LiveCurve::new(shoulder.clone()), LiveCurve::new(shoulder)],
             elbow: [LiveCurve::new(elbow.clone()), LiveCurve::new(elbow)],
+            pelvis_cycle: 0,
         }
     }
 
@@ -79,6 +83,7 @@ impl LiveCurves {
             for c in [&mut self.obliquity, &mut self.rotation, &mut self.tilt, &mut self.lateral] {
                 c.wrap();
             }
+            self.pelvis_cycle += 1;
         }
     }
 }
@@ -145,12 +150,22 @@ impl Gait {
         // At the walk's end the sway and the rotations fade to standing (zero) with the
         // settling's weight.
         let keep = plan.settling().map_or(1.0, |s| 1.0 - s.weight(phase));
-        let z = self.live.lateral.eval(p) * keep;
+        let live = &self.live;
+        // Obliquity and tilt raise and lower the hips: a phase in a later cycle takes the
+        // curves that will play then, so that a step's reach is guarded with the hip heights
+        // the leg will meet (a live `walk.sway` edit changes the next cycle's obliquity). The
+        // sideways sway and the rotation, which a speed change moves too, keep this cycle's:
+        // looking ahead with them too moved the optimiser's choices on a scheduled walk and
+        // raised its pelvis's velocity jump at a speed change from 1.47x to 1.73x the steady
+        // walk's, and reach did not need them (the live-change sweep in tests/gait_normal.rs).
+        let ahead = (phase.floor() as i64) > live.pelvis_cycle;
+        let hip_height_curve = |curve: &LiveCurve| if ahead { curve.eval_next_cycle(p) } else { curve.eval(p) };
+        let z = live.lateral.eval(p) * keep;
         PelvisPose::new(
             DVec3::new(x, y, z),
-            self.live.rotation.eval(p) * keep,
-            self.live.obliquity.eval(p) * keep,
-            self.live.tilt.eval(p) * keep,
+            live.rotation.eval(p) * keep,
+            hip_height_curve(&live.obliquity) * keep,
+            hip_height_curve(&live.tilt) * keep,
             0.5 * self.r.dims.hip_width,
         )
     }

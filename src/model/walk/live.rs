@@ -3,7 +3,7 @@
 //! cycle's end, the trajectory curves wait for the next pelvis key, and everything planned per
 //! step takes the new values from the next toe-off.
 
-use crate::model::gait_curves::CurveSet;
+use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::params::WalkParams;
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
 use crate::model::walk::leg::LegPhase;
@@ -57,9 +57,16 @@ impl Walker {
                 solver.set_settings(r.ik);
             }
         }
+        let hip_heights_changed = r.obliquity_range != self.gait.r.obliquity_range
+            || r.tilt_range != self.gait.r.tilt_range
+            || design.get(CurveName::PelvisObliquity) != self.gait.design.get(CurveName::PelvisObliquity)
+            || design.get(CurveName::PelvisTilt) != self.gait.design.get(CurveName::PelvisTilt);
         self.gait.design = design;
         self.gait.r = r;
         self.params = params.clone();
+        if hip_heights_changed {
+            self.guard_swing_landing_again(phase);
+        }
         Ok(true)
     }
 

@@ -22,6 +22,7 @@ mod pace_state;
 pub mod pelvis;
 mod planner;
 pub mod pose;
+mod reach_guard;
 mod start;
 pub mod step_problem;
 pub mod timing;

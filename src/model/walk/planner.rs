@@ -11,10 +11,10 @@ use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
-use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, shank_angle, swing_target};
-use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
+use crate::model::walk::gait::{MIN_STRIKE_ANGLE, foot_pitch_for_ankle, shank_angle, swing_target};
+use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
 use crate::model::walk::pace_state::StepKind;
-use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
+use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
 use crate::model::walk::timing::FramePart;
@@ -30,7 +30,7 @@ impl Walker {
         let ms_left = self.midstance_key(&left, -0.5);
         self.plan.push(ms_left);
         self.push_step_keys(&left, &right, 0.0);
-        self.guard_stance_reach(Side::Right, 0.0, None);
+        self.guard_stance_reach(Side::Right, 0.0, None, f64::NEG_INFINITY);
     }
 
     /// At `side`'s toe-off: plan its footfall, the pelvis keys up to its mid-stance, and the
@@ -83,7 +83,7 @@ impl Walker {
         // pelvis where they would not. Twice: first with the double support at the fixed rule,
         // so that the optimiser searches around keys the legs can follow (the mid-stance key in
         // particular, which no candidate moves), then for the chosen position.
-        let mut guard_drop = self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
+        let mut guard_drop = self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan, f64::NEG_INFINITY);
         let ds = *self.plan.last_of(KeyKind::DoubleSupport).expect("pushed above");
         let ms_after = *self.plan.last_of(KeyKind::MidStance).expect("pushed above");
         self.lap(FramePart::SwingPlanning);
@@ -95,7 +95,7 @@ impl Walker {
             let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
             let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
             plan.ankle_deg = ankle_deg;
-            guard_drop += self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan);
+            guard_drop += self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan, f64::NEG_INFINITY);
         }
         // Step 3: simulate the swing and raise the heel where the leg cannot reach or the
         // foot would touch the ground.
@@ -178,28 +178,6 @@ impl Walker {
         self.plan.push(ds);
         self.plan.push(PelvisKey { pace: ds.pace, ..ms_after });
         ms_before
-    }
-
-    /// The reach guard for the stance `side` is about to land in on `to`: the leg still
-    /// stands on its old footfall until heel strike, so its state is lent the new footfall
-    /// and strike angle for the guard's questions, then given back. Returns the guard's drop.
-    fn guard_landing_reach(
-        &mut self,
-        side: Side,
-        to: Footfall,
-        strike_angle: f64,
-        strike_phase: f64,
-        plan: &SwingPlan,
-    ) -> f64 {
-        let i = side.index();
-        let saved_footfall = self.legs[i].footfall;
-        let saved_strike = self.legs[i].strike_angle;
-        self.legs[i].footfall = to;
-        self.legs[i].strike_angle = strike_angle;
-        let drop = self.guard_stance_reach(side, strike_phase, Some(plan));
-        self.legs[i].footfall = saved_footfall;
-        self.legs[i].strike_angle = saved_strike;
-        drop
     }
 
     /// The pelvis key at mid-stance over `footfall`, whose heel strike is at master phase
@@ -330,149 +308,6 @@ impl Walker {
         record
     }
 
-    /// Lowers the newest pelvis keys where `side`'s leg, striking at `strike_phase`, could not
-    /// reach its ground contact during loading response and midstance. The terrain rule
-    /// keeps the knee's extension, but a long stride or a big drop can still put the heel out
-    /// of reach; the planner drops the pelvis rather than let the heel slide. Returns the
-    /// drop of the double-support key (m).
-    fn guard_stance_reach(&mut self, side: Side, strike_phase: f64, swing: Option<&SwingPlan>) -> f64 {
-        let r = self.gait.r.clone();
-        let limit = r.reach_margin * r.dims.leg_reach();
-        let footfall = self.legs[side.index()].footfall;
-        let strike_angle = self.legs[side.index()].strike_angle;
-        // Only the two newest keys may move: the segment ending at any older key may be
-        // playing already, and moving its key would make the pelvis jump.
-        let ds_phase = self.plan.last_of(KeyKind::DoubleSupport).map_or(f64::NAN, |k| k.phase);
-        let ms_phase = self.plan.last_of(KeyKind::MidStance).map_or(f64::NAN, |k| k.phase);
-        // From the end of the swing (when a plan is given: the knee is nearly straight there
-        // too) through loading response and midstance.
-        // Samples are densest around heel strike, where the leg is straightest.
-        let mut samples: Vec<f64> = Vec::with_capacity(24);
-        if swing.is_some() {
-            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
-        }
-        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
-        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
-        samples.extend(
-            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
-        );
-        // The other leg's heel rise up to its toe-off, which falls in the coming double
-        // support: it must reach at some heel-rise angle the walk may take (a stair's upper
-        // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
-        // tread into the next riser).
-        let trailing = self.trailing_reach(side, swing.is_some());
-        let sample_poses = self.pelvis_poses(&samples);
-        let trailing_poses = trailing.as_ref().map_or_else(Vec::new, |t| self.pelvis_poses(&t.phases));
-        let mut dropped = 0.0;
-        for _ in 0..6 {
-            let mut deficits: Vec<(f64, f64)> = Vec::with_capacity(samples.len() + 9);
-            if let Some(t) = &trailing {
-                deficits.extend(t.phases.iter().zip(&trailing_poses).filter_map(|(&phase, pose)| {
-                    let hip = self.rekeyed_hip(pose, phase, side.other().sign());
-                    t.deficit(hip, limit).map(|d| (phase, d))
-                }));
-            }
-            for (&phase, pose) in samples.iter().zip(&sample_poses) {
-                let hip = self.rekeyed_hip(pose, phase, side.sign());
-                let ankle = match swing {
-                    Some(plan) if phase < strike_phase => {
-                        let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
-                        swing_target(plan, s, side, &r, hip).ankle
-                    }
-                    _ => {
-                        let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
-                        let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
-                        footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
-                    }
-                };
-                let d = hip - ankle;
-                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                let allowed = if horizontal < limit {
-                    ankle.y + (limit * limit - horizontal * horizontal).sqrt()
-                } else {
-                    ankle.y
-                };
-                if hip.y > allowed {
-                    deficits.push((phase, hip.y - allowed));
-                }
-            }
-            let Some((need, kind)) = self.key_to_lower(&deficits, ds_phase, ms_phase) else { break };
-            if let Some(key) = self.plan.last_of_mut(kind) {
-                key.y -= need;
-                if kind == KeyKind::DoubleSupport {
-                    dropped += need;
-                }
-            }
-        }
-        dropped
-    }
-
-    /// The pelvis at each of `phases`, for [`Self::rekeyed_hip`].
-    fn pelvis_poses(&self, phases: &[f64]) -> Vec<PelvisPose> {
-        phases.iter().map(|&phase| self.pelvis_at(phase)).collect()
-    }
-
-    /// The hip of side `side_sign` at `phase`, `pose` being the pelvis there before the
-    /// guard moved keys. Moving keys changes the pelvis's path only, not its sway or
-    /// rotations, so only the path is evaluated again: the same numbers as a whole
-    /// [`Walker::pelvis_at`], without its four angle curves and three rotations on each of
-    /// the guard's up to six passes.
-    fn rekeyed_hip(&self, pose: &PelvisPose, phase: f64, side_sign: f64) -> DVec3 {
-        let (x, y) = self.pelvis_position_with_plan(&self.plan, phase);
-        PelvisPose { position: DVec3::new(x, y, pose.position.z), ..*pose }.hip(side_sign)
-    }
-
-    /// Of the movable keys (the newest double support and mid-stance: an older one may be
-    /// playing already), the one to lower and by how much, so that the worst reach deficit
-    /// goes: at each instant, the key that moves the pelvis most then.
-    fn key_to_lower(&self, deficits: &[(f64, f64)], ds_phase: f64, ms_phase: f64) -> Option<(f64, KeyKind)> {
-        let mut worst: Option<(f64, KeyKind)> = None;
-        for &(phase, deficit) in deficits {
-            let (a, b, u) = self.plan.bracket(phase);
-            let v = self.gait.traj.vertical.eval(u);
-            let mut choice: Option<(KeyKind, f64)> = None;
-            for (key, weight) in [(a, 1.0 - v), (b, v)] {
-                let movable = key.phase == ds_phase || key.phase == ms_phase;
-                if movable && choice.is_none_or(|(_, w)| weight > w) {
-                    choice = Some((key.kind, weight));
-                }
-            }
-            let Some((kind, weight)) = choice else { continue };
-            let need = deficit / weight.max(0.25) + 1e-4;
-            if worst.is_none_or(|(w, _)| need > w) {
-                worst = Some((need, kind));
-            }
-        }
-        worst
-    }
-
-    /// The other leg's remaining heel rise, when a step is being planned (`planning`) and
-    /// that leg stands.
-    fn trailing_reach(&self, side: Side, planning: bool) -> Option<TrailingReach> {
-        let leg = &self.legs[side.other().index()];
-        if !planning || leg.phase == LegPhase::Swing {
-            return None;
-        }
-        let r = &self.gait.r;
-        let ff = leg.footfall;
-        // The toe joint the heel rise turns about: where it is, or where it will be.
-        let ball = if leg.phase == LegPhase::HeelRise {
-            leg.anchor
-        } else {
-            ff.heel + foot_rotation(ff.yaw, ff.ground_angle) * (r.dims.ball_local() - r.dims.heel_local())
-        };
-        let (from, to) = (leg.cycle_start + r.heel_rise, leg.cycle_start + r.toe_off);
-        let phases = (0..=8).map(|i| from + (to - from) * f64::from(i) / 8.0).collect();
-        // The ankle at each heel-rise angle depends on the foot alone, not on the hip the
-        // guard tries: worked out once here, not for every phase of every pass (those
-        // quaternions were a quarter of a step's planning instructions).
-        let ankles = std::array::from_fn(|i| {
-            let angle = MAX_HEEL_RISE * i as f64 / (TRAILING_ANGLES - 1) as f64;
-            ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * r.dims.ball_local()
-        });
-        Some(TrailingReach { phases, ankles })
-    }
-
     /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
     /// the plan, IK; raise the heel-height curve where the ankle is beyond reach, then where
     /// heel, toe tip or sole would come within the clearance of the ground. Up to eight passes;
@@ -546,8 +381,6 @@ impl Walker {
     }
 }
 
-/// A trailing leg in (or coming to) heel rise: the toe joint it turns about and the instants
-/// to check.
 /// One sample of the swing simulation as a pass left it: the heel height it was solved at,
 /// its target, and its leg pose once solved (a sample lifted for reach is not).
 #[derive(Clone, Copy)]
@@ -555,34 +388,6 @@ struct SolvedSample {
     heel_height: f64,
     target: LegTarget,
     pose: Option<LegPose>,
-}
-
-/// Heel-rise angles the trailing foot is tried at, from flat to [`MAX_HEEL_RISE`].
-const TRAILING_ANGLES: usize = 30;
-
-struct TrailingReach {
-    phases: Vec<f64>,
-    /// The ankle at each of the [`TRAILING_ANGLES`] heel-rise angles, the foot turning about
-    /// its toe joint.
-    ankles: [DVec3; TRAILING_ANGLES],
-}
-
-impl TrailingReach {
-    /// How far `hip` is above the highest point from which the leg still reaches its foot at
-    /// some heel-rise angle up to [`MAX_HEEL_RISE`] (m); `None` if it reaches, or if no
-    /// lowering would help (the foot is too far behind).
-    fn deficit(&self, hip: DVec3, limit: f64) -> Option<f64> {
-        let allowed = self
-            .ankles
-            .iter()
-            .filter_map(|ankle| {
-                let d = hip - *ankle;
-                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
-            })
-            .fold(f64::NEG_INFINITY, f64::max);
-        (allowed.is_finite() && hip.y > allowed).then_some(hip.y - allowed)
-    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,248 @@
+//! The reach guard: the pelvis keys a step plans are lowered where a leg could not reach its
+//! foot — the landing leg from the end of its swing through loading response and mid-stance,
+//! and the trailing leg through its heel rise to toe-off [6.3.3]. Run when a step is planned
+//! and again when a live change moves the hips' heights. Its own file as the planner's other
+//! half: what a step *asks* of the pelvis, beside `planner.rs`'s what a step *is*.
+
+use crate::model::body::Side;
+use crate::model::walk::Walker;
+use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, swing_target};
+use crate::model::walk::leg::{Footfall, LegPhase, SwingPlan, foot_rotation};
+use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
+use glam::DVec3;
+
+impl Walker {
+    /// The reach guard for the stance `side` is about to land in on `to`: the leg still
+    /// stands on its old footfall until heel strike, so its state is lent the new footfall
+    /// and strike angle for the guard's questions, then given back. Returns the guard's drop.
+    pub(super) fn guard_landing_reach(
+        &mut self,
+        side: Side,
+        to: Footfall,
+        strike_angle: f64,
+        strike_phase: f64,
+        plan: &SwingPlan,
+        playing_at: f64,
+    ) -> f64 {
+        let i = side.index();
+        let saved_footfall = self.legs[i].footfall;
+        let saved_strike = self.legs[i].strike_angle;
+        self.legs[i].footfall = to;
+        self.legs[i].strike_angle = strike_angle;
+        let drop = self.guard_stance_reach(side, strike_phase, Some(plan), playing_at);
+        self.legs[i].footfall = saved_footfall;
+        self.legs[i].strike_angle = saved_strike;
+        drop
+    }
+
+    /// Lowers the newest pelvis keys where `side`'s leg, striking at `strike_phase`, could not
+    /// reach its ground contact during loading response and midstance. The terrain rule
+    /// keeps the knee's extension, but a long stride or a big drop can still put the heel out
+    /// of reach; the planner drops the pelvis rather than let the heel slide. Returns the
+    /// drop of the double-support key (m).
+    ///
+    /// Planning passes `playing_at` = −∞. A live change passes the walk's phase: a key whose
+    /// segment is already playing there stays put too.
+    pub(super) fn guard_stance_reach(
+        &mut self,
+        side: Side,
+        strike_phase: f64,
+        swing: Option<&SwingPlan>,
+        playing_at: f64,
+    ) -> f64 {
+        let r = self.gait.r.clone();
+        let limit = r.reach_margin * r.dims.leg_reach();
+        let footfall = self.legs[side.index()].footfall;
+        let strike_angle = self.legs[side.index()].strike_angle;
+        // Only the two newest keys may move: the segment ending at any older key may be
+        // playing already, and moving its key would make the pelvis jump.
+        let ds_phase = self.movable_key_phase(KeyKind::DoubleSupport, playing_at);
+        let ms_phase = self.movable_key_phase(KeyKind::MidStance, playing_at);
+        // From the end of the swing (when a plan is given: the knee is nearly straight there
+        // too) through loading response and midstance.
+        // Samples are densest around heel strike, where the leg is straightest.
+        let mut samples: Vec<f64> = Vec::with_capacity(24);
+        if swing.is_some() {
+            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
+        }
+        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
+        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        samples.extend(
+            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
+        );
+        // The other leg's heel rise up to its toe-off, which falls in the coming double
+        // support: it must reach at some heel-rise angle the walk may take (a stair's upper
+        // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
+        // tread into the next riser).
+        let trailing = self.trailing_reach(side, swing.is_some());
+        let sample_poses = self.pelvis_poses(&samples);
+        let trailing_poses = trailing.as_ref().map_or_else(Vec::new, |t| self.pelvis_poses(&t.phases));
+        let mut dropped = 0.0;
+        for _ in 0..6 {
+            let mut deficits: Vec<(f64, f64)> = Vec::with_capacity(samples.len() + 9);
+            if let Some(t) = &trailing {
+                deficits.extend(t.phases.iter().zip(&trailing_poses).filter_map(|(&phase, pose)| {
+                    let hip = self.rekeyed_hip(pose, phase, side.other().sign());
+                    t.deficit(hip, limit).map(|d| (phase, d))
+                }));
+            }
+            for (&phase, pose) in samples.iter().zip(&sample_poses) {
+                let hip = self.rekeyed_hip(pose, phase, side.sign());
+                let ankle = match swing {
+                    Some(plan) if phase < strike_phase => {
+                        let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
+                        swing_target(plan, s, side, &r, hip).ankle
+                    }
+                    _ => {
+                        let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
+                        let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
+                        footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
+                    }
+                };
+                let d = hip - ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                let allowed = if horizontal < limit {
+                    ankle.y + (limit * limit - horizontal * horizontal).sqrt()
+                } else {
+                    ankle.y
+                };
+                if hip.y > allowed {
+                    deficits.push((phase, hip.y - allowed));
+                }
+            }
+            let Some((need, kind)) = self.key_to_lower(&deficits, ds_phase, ms_phase) else { break };
+            if let Some(key) = self.plan.last_of_mut(kind) {
+                key.y -= need;
+                if kind == KeyKind::DoubleSupport {
+                    dropped += need;
+                }
+            }
+        }
+        dropped
+    }
+
+    /// The phase of the newest key of `kind` if the segment ending at it starts after
+    /// `playing_at` (so moving it moves no pelvis already played); NaN, matching no key, if not.
+    fn movable_key_phase(&self, kind: KeyKind, playing_at: f64) -> f64 {
+        let keys: Vec<&PelvisKey> = self.plan.keys().collect();
+        let Some(at) = keys.iter().rposition(|k| k.kind == kind) else { return f64::NAN };
+        let segment_start = if at == 0 { f64::NEG_INFINITY } else { keys[at - 1].phase };
+        if segment_start > playing_at { keys[at].phase } else { f64::NAN }
+    }
+
+    /// After a live change of the pelvis's obliquity or tilt, which raise or lower a stance
+    /// hip: the swinging leg's landing was guarded with the old shape when its step was
+    /// planned, so its loading response and mid-stance are guarded again under the new one.
+    /// Without this, a `walk.sway` edit in a few-frame window of the cycle left that leg out
+    /// of reach at the end of its mid-stance (12 of 33 moments of a cycle, up to 0.5 mm of
+    /// slide). Only keys not yet playing move.
+    pub(super) fn guard_swing_landing_again(&mut self, playing_at: f64) {
+        let Some(i) = self.legs.iter().position(|l| l.phase == LegPhase::Swing && l.swing.is_some()) else {
+            return;
+        };
+        let (side, strike_phase) = (self.legs[i].side, self.legs[i].cycle_start + 1.0);
+        let plan = self.legs[i].swing.clone().expect("checked above");
+        let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
+        let to = plan.to;
+        let dorsi = plan.ankle_deg.eval(1.0).to_radians();
+        let strike_angle = (foot_pitch_for_ankle(strike_hip, to.heel, to.yaw, dorsi, &self.gait.r) - to.ground_angle)
+            .max(MIN_STRIKE_ANGLE);
+        self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan, playing_at);
+    }
+
+    /// The pelvis at each of `phases`, for [`Self::rekeyed_hip`].
+    fn pelvis_poses(&self, phases: &[f64]) -> Vec<PelvisPose> {
+        phases.iter().map(|&phase| self.pelvis_at(phase)).collect()
+    }
+
+    /// The hip of side `side_sign` at `phase`, `pose` being the pelvis there before the
+    /// guard moved keys. Moving keys changes the pelvis's path only, not its sway or
+    /// rotations, so only the path is evaluated again: the same numbers as a whole
+    /// [`Walker::pelvis_at`], without its four angle curves and three rotations on each of
+    /// the guard's up to six passes.
+    fn rekeyed_hip(&self, pose: &PelvisPose, phase: f64, side_sign: f64) -> DVec3 {
+        let (x, y) = self.pelvis_position_with_plan(&self.plan, phase);
+        PelvisPose { position: DVec3::new(x, y, pose.position.z), ..*pose }.hip(side_sign)
+    }
+
+    /// Of the movable keys (the newest double support and mid-stance: an older one may be
+    /// playing already), the one to lower and by how much, so that the worst reach deficit
+    /// goes: at each instant, the key that moves the pelvis most then.
+    fn key_to_lower(&self, deficits: &[(f64, f64)], ds_phase: f64, ms_phase: f64) -> Option<(f64, KeyKind)> {
+        let mut worst: Option<(f64, KeyKind)> = None;
+        for &(phase, deficit) in deficits {
+            let (a, b, u) = self.plan.bracket(phase);
+            let v = self.gait.traj.vertical.eval(u);
+            let mut choice: Option<(KeyKind, f64)> = None;
+            for (key, weight) in [(a, 1.0 - v), (b, v)] {
+                let movable = key.phase == ds_phase || key.phase == ms_phase;
+                if movable && choice.is_none_or(|(_, w)| weight > w) {
+                    choice = Some((key.kind, weight));
+                }
+            }
+            let Some((kind, weight)) = choice else { continue };
+            let need = deficit / weight.max(0.25) + 1e-4;
+            if worst.is_none_or(|(w, _)| need > w) {
+                worst = Some((need, kind));
+            }
+        }
+        worst
+    }
+
+    /// The other leg's remaining heel rise, when a step is being planned (`planning`) and
+    /// that leg stands.
+    fn trailing_reach(&self, side: Side, planning: bool) -> Option<TrailingReach> {
+        let leg = &self.legs[side.other().index()];
+        if !planning || leg.phase == LegPhase::Swing {
+            return None;
+        }
+        let r = &self.gait.r;
+        let ff = leg.footfall;
+        // The toe joint the heel rise turns about: where it is, or where it will be.
+        let ball = if leg.phase == LegPhase::HeelRise {
+            leg.anchor
+        } else {
+            ff.heel + foot_rotation(ff.yaw, ff.ground_angle) * (r.dims.ball_local() - r.dims.heel_local())
+        };
+        let (from, to) = (leg.cycle_start + r.heel_rise, leg.cycle_start + r.toe_off);
+        let phases = (0..=8).map(|i| from + (to - from) * f64::from(i) / 8.0).collect();
+        // The ankle at each heel-rise angle depends on the foot alone, not on the hip the
+        // guard tries: worked out once here, not for every phase of every pass (those
+        // quaternions were a quarter of a step's planning instructions).
+        let ankles = std::array::from_fn(|i| {
+            let angle = MAX_HEEL_RISE * i as f64 / (TRAILING_ANGLES - 1) as f64;
+            ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * r.dims.ball_local()
+        });
+        Some(TrailingReach { phases, ankles })
+    }
+}
+
+/// Heel-rise angles the trailing foot is tried at, from flat to [`MAX_HEEL_RISE`].
+const TRAILING_ANGLES: usize = 30;
+
+/// A trailing leg in (or coming to) heel rise: the toe joint it turns about and the instants
+/// to check.
+struct TrailingReach {
+    phases: Vec<f64>,
+    /// The ankle at each of the [`TRAILING_ANGLES`] heel-rise angles, the foot turning about
+    /// its toe joint.
+    ankles: [DVec3; TRAILING_ANGLES],
+}
+
+impl TrailingReach {
+    /// How far `hip` is above the highest point from which the leg still reaches its foot at
+    /// some heel-rise angle up to [`MAX_HEEL_RISE`] (m); `None` if it reaches, or if no
+    /// lowering would help (the foot is too far behind).
+    fn deficit(&self, hip: DVec3, limit: f64) -> Option<f64> {
+        let allowed = self
+            .ankles
+            .iter()
+            .filter_map(|ankle| {
+                let d = hip - *ankle;
+                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+                (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        (allowed.is_finite() && hip.y > allowed).then_some(hip.y - allowed)
+    }
+}
