@@ -71,9 +71,10 @@ fn each_plateau_is_measured_after_its_speed_was_reached_and_within_3_percent() {
             assert!(from > reached[n - 1] + 0.1, "plateau {n} from {from:.2} s, reached at {:.2} s", reached[n - 1]);
             let ramp = &parts[parts.iter().position(|q| q.first == p.first).unwrap() - 1];
             assert_eq!(ramp.kind, PartKind::SpeedChange);
-            // Both heel strikes that take a step of the ramp are the speed change's, not the
-            // plateau's.
-            assert_eq!(ramp.steps.len(), 2, "heel strikes in the speed change: {:?}", ramp.steps);
+            // Both heel strikes that take a step of the ramp, and the one the cadence blend
+            // after it ends at (a gait cycle after the reaching strike), are the speed
+            // change's, not the plateau's; the plateau starts at the blend's end.
+            assert_eq!(ramp.steps.len(), 3, "heel strikes in the speed change: {:?}", ramp.steps);
             assert_eq!(p.steps[0], p.first, "a plateau starts at a heel strike");
         }
     }

@@ -7,9 +7,10 @@
 //! - **not walking**: any state but walking — stopping (the step under way when the stop is
 //!   asked, then the braking step, then the closing step and the settle, told apart by the
 //!   pace events), standing, or any other the walker reports (a standing start's);
-//! - **speed change**: from the frame a new speed is asked to the step after it was reached
-//!   (the `SpeedReached` event falls at the heel strike that takes the ramp's last step, and
-//!   the cadence then blends over one more step), so the ramp's steps are never steady;
+//! - **speed change**: from the frame a new speed is asked to the end of the cadence blend
+//!   after it was reached (the `SpeedReached` event falls at the heel strike that takes the
+//!   ramp's last step, and the cadence then blends over [`CADENCE_BLEND_CYCLES`], two more
+//!   steps), so the ramp's steps are never steady;
 //! - **start-up**: the first gait cycle, from the start pose to the first right heel strike
 //!   (the cycle [`super::CycleSummary`] numbers 0);
 //! - **plateau**: the rest — walking at an asked speed already reached.
@@ -21,7 +22,7 @@
 
 use super::{Run, events};
 use crate::model::walk::frame::Frame;
-use crate::model::walk::pace::{PaceEventKind, WalkState};
+use crate::model::walk::pace::{CADENCE_BLEND_CYCLES, PaceEventKind, WalkState};
 
 /// What a stretch of the walk was doing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,7 +31,7 @@ pub enum PartKind {
     StartUp,
     /// Walking steadily at the asked speed.
     Plateau,
-    /// A speed change: the ramp's steps and the step after.
+    /// A speed change: the ramp's steps and the cadence blend after them.
     SpeedChange,
     /// The braking step of a stop: from its toe-off (the pelvis starts to settle) to the
     /// closing step's.
@@ -177,13 +178,16 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     let mut change_until = 0;
     let mut stop_stage = None;
     let mut labels = Vec::with_capacity(frames.len());
+    let blend_steps = ((2.0 * CADENCE_BLEND_CYCLES).ceil() as usize).max(1);
     for (i, f) in frames.iter().enumerate() {
         while let Some(e) = events.next_if(|e| e.time_s < f.time_s - 1e-9) {
             match e.kind {
                 PaceEventKind::SpeedAsked(v) => (asked, change_until) = (v, usize::MAX),
-                // The reaching heel strike is frame `i`; steady from the step after it.
+                // The reaching heel strike is frame `i`; steady from the heel strike that
+                // ends the cadence blend it started.
                 PaceEventKind::SpeedReached(_) => {
-                    change_until = steps.iter().copied().find(|&s| s > i).unwrap_or(frames.len());
+                    change_until =
+                        steps.iter().copied().filter(|&s| s > i).nth(blend_steps - 1).unwrap_or(frames.len());
                 }
                 PaceEventKind::StopAsked => asked = 0.0,
                 PaceEventKind::Braking => stop_stage = Some(PartKind::Braking),

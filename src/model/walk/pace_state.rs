@@ -102,7 +102,8 @@ pub(crate) struct Pace {
     /// A speed change under way: from, to, steps taken of [`RAMP_STEPS`].
     pub(crate) ramp: Option<(f64, f64, u32)>,
     /// The cadence blend under way: the phase it began at and the cycle duration it began
-    /// from; over half a cycle the duration goes linearly to the walk's.
+    /// from; over [`super::pace::CADENCE_BLEND_CYCLES`] the duration goes to the walk's on a
+    /// smoothstep.
     pub(crate) rate_from: Option<(f64, f64)>,
     pub(crate) stop: StopStage,
     pub(crate) start_x: f64,
