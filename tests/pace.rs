@@ -171,12 +171,10 @@ fn a_scheduled_walk_reaches_each_plateau_within_two_steps() {
 }
 
 /// Speed changes of 0.8 m/s within two steps. Measured: the skate, ground and reach checks
-/// as steady; joint speeds within 1.05x of the steady walks' maxima (knee), joint jerk 1.24x
-/// (hip; knee 1.23x), the pelvis's velocity change per frame 1.10x. The issue asks 1.2x:
-/// met for joint speed and the pelvis, not for jerk, whose excess is at the ramp's last heel
-/// strike, where a new cadence blend starts from the one under way (docs/gait-model.md §13).
-/// Before the cadence blended over a whole cycle on a smoothstep (`CADENCE_BLEND_CYCLES`):
-/// 1.32x, 1.38x and 1.47x.
+/// as steady; joint speeds within 1.07x of the steady walks' maxima (knee), joint jerk 1.13x
+/// (hip and knee), the pelvis's velocity change per frame 1.19x: inside the issue's 1.2x.
+/// Before the cadence blended over a whole cycle on a Hermite handing its slope on
+/// (`CADENCE_BLEND_CYCLES`): 1.32x, 1.38x and 1.47x.
 #[test]
 fn pace_changes_keep_joints_and_pelvis_near_the_steady_walks() {
     let (frames, _) = walk(&scheduled(), 14.0, FPS);
@@ -197,7 +195,7 @@ fn pace_changes_keep_joints_and_pelvis_near_the_steady_walks() {
     let (seen, seen_jerk) = (max_steps(&frames), max_speed_changes(&frames));
     for i in 0..4 {
         assert!(seen[i] <= usual[i] * 1.2, "joint {i}: {:.2} vs {:.2}°/frame", seen[i], usual[i]);
-        assert!(seen_jerk[i] <= usual_jerk[i] * 1.3, "joint {i}: {:.2} vs {:.2}°/frame²", seen_jerk[i], usual_jerk[i]);
+        assert!(seen_jerk[i] <= usual_jerk[i] * 1.2, "joint {i}: {:.2} vs {:.2}°/frame²", seen_jerk[i], usual_jerk[i]);
     }
     let pelvis = max_pelvis_velocity_jump(&frames, FPS);
     assert!(pelvis <= usual_pelvis * 1.2, "pelvis {pelvis:.3} vs {usual_pelvis:.3}");

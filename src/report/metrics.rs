@@ -170,7 +170,7 @@ pub struct SteadyPlateau {
 }
 
 impl SteadyPlateau {
-    /// As the outputs name it: "6.45–8.40 s, the 1.60 m/s plateau, 2 cycles".
+    /// As the outputs name it: "6.42–8.37 s, the 1.60 m/s plateau, 2 cycles".
     #[must_use]
     pub fn describe(&self) -> String {
         let plural = if self.cycles == 1 { "" } else { "s" };

@@ -43,7 +43,7 @@ pub struct Snapshot {
     /// The mean joint curves ([`CURVES`], [`POINTS`] each).
     pub curves: Vec<(String, Vec<f64>)>,
     /// Which part of the walk the figures and curves were measured on, for a walk that was
-    /// not steady throughout (its pace changed or it stopped): "6.45–8.40 s, the 1.60 m/s
+    /// not steady throughout (its pace changed or it stopped): "6.42–8.37 s, the 1.60 m/s
     /// plateau, 2 cycles"; `None` (and not written) for a walk steady throughout.
     pub steady_part: Option<String>,
 }

@@ -160,16 +160,32 @@ impl Walker {
     }
 
     /// Cycle duration in force at master phase `phase`: the walk's, or on the way to it
-    /// during a cadence blend.
+    /// during a cadence blend — a cubic Hermite over [`CADENCE_BLEND_CYCLES`] from the duration
+    /// and slope the blend began with to the walk's, flat at its end.
     #[must_use]
     pub(super) fn cycle_s_at(&self, phase: f64) -> f64 {
-        match self.pace.rate_from {
-            Some((from_phase, from_cycle)) => {
-                let u = ((phase - from_phase) / CADENCE_BLEND_CYCLES).clamp(0.0, 1.0);
-                from_cycle + (self.gait.r.cycle_s - from_cycle) * u * u * (3.0 - 2.0 * u)
-            }
-            None => self.gait.r.cycle_s,
-        }
+        self.cadence_blend_at(phase).0
+    }
+
+    /// The cycle duration (s) at `phase` and its slope (s per cycle of phase).
+    fn cadence_blend_at(&self, phase: f64) -> (f64, f64) {
+        let target = self.gait.r.cycle_s;
+        let Some((from_phase, from_cycle, from_slope)) = self.pace.rate_from else { return (target, 0.0) };
+        let span = CADENCE_BLEND_CYCLES;
+        let u = ((phase - from_phase) / span).clamp(0.0, 1.0);
+        let (u2, u3) = (u * u, u * u * u);
+        let value = (2.0 * u3 - 3.0 * u2 + 1.0) * from_cycle
+            + (u3 - 2.0 * u2 + u) * span * from_slope
+            + (3.0 * u2 - 2.0 * u3) * target;
+        let slope = if u >= 1.0 {
+            0.0
+        } else {
+            ((6.0 * u2 - 6.0 * u) * from_cycle
+                + (3.0 * u2 - 4.0 * u + 1.0) * span * from_slope
+                + (6.0 * u - 6.0 * u2) * target)
+                / span
+        };
+        (value, slope)
     }
 
     /// Advances by `dt_s` during a cadence blend: updates of at most [`super::MAX_UPDATE_CYCLES`]
@@ -182,7 +198,7 @@ impl Walker {
             let cycle = self.cycle_s_at(self.phase);
             self.update_to(self.phase + sub / cycle);
         }
-        if let Some((from_phase, _)) = self.pace.rate_from
+        if let Some((from_phase, ..)) = self.pace.rate_from
             && self.phase >= from_phase + CADENCE_BLEND_CYCLES
         {
             self.pace.rate_from = None;
@@ -191,7 +207,7 @@ impl Walker {
 
     /// The cadence blend under way, if any: the cycle duration it began from.
     pub(super) fn blending_from(&self) -> Option<f64> {
-        self.pace.rate_from.map(|(_, c)| c)
+        self.pace.rate_from.map(|(_, c, _)| c)
     }
 
     /// At a heel strike (master phase `at`): takes the next step of a speed change.
@@ -211,7 +227,9 @@ impl Walker {
     /// Walks at `speed_mps` from master phase `at` (a heel strike): the parameters change as
     /// a live edit would change them, and the cadence blends over the coming step.
     fn apply_speed(&mut self, speed_mps: f64, at: f64) {
-        let old_cycle = self.cycle_s_at(at);
+        // A blend under way hands on its duration and its slope: restarting flat at this
+        // heel strike was a 1.24x joint jerk at a ramp's second step.
+        let (old_cycle, old_slope) = self.cadence_blend_at(at);
         let mut params = self.params.clone();
         params.walk.speed_mps = speed_mps;
         // The same body, terrain and curves: the change cannot be refused. As at a hair before
@@ -221,7 +239,7 @@ impl Walker {
         // asked at the new cycle's start they would bend the old cycle's last segment, whose
         // end is that very instant, and jump.
         if self.set_params_at(&params, at - 1e-9).unwrap_or(false) && old_cycle != self.gait.r.cycle_s {
-            self.pace.rate_from = Some((at, old_cycle));
+            self.pace.rate_from = Some((at, old_cycle, old_slope));
         }
     }
 
@@ -333,9 +351,9 @@ pub(super) fn fixed_record(
     }
 }
 
-/// Gait cycles over which the cadence of a speed change's step fades in, on a smoothstep (a
-/// step interrupting the blend starts its own from the cadence reached). Over half a cycle
-/// (one step) and linearly, as first built, the swing under way sped up so fast that the knee
+/// Gait cycles over which the cadence of a speed change's step fades in (a step interrupting
+/// the blend starts its own from the duration and slope reached). Over half a cycle (one
+/// step) and linearly, as first built, the swing under way sped up so fast that the knee
 /// extended toward heel strike at 1.32x the steady walks' fastest, and the rate's corners were
-/// 1.30x jerks; over a whole cycle on a smoothstep: 1.05x and 1.24x (tests/pace.rs).
+/// 1.30x jerks (tests/pace.rs).
 pub const CADENCE_BLEND_CYCLES: f64 = 1.0;

@@ -101,10 +101,10 @@ pub(crate) struct Pace {
     pub(crate) next: usize,
     /// A speed change under way: from, to, steps taken of [`RAMP_STEPS`].
     pub(crate) ramp: Option<(f64, f64, u32)>,
-    /// The cadence blend under way: the phase it began at and the cycle duration it began
-    /// from; over [`super::pace::CADENCE_BLEND_CYCLES`] the duration goes to the walk's on a
-    /// smoothstep.
-    pub(crate) rate_from: Option<(f64, f64)>,
+    /// The cadence blend under way: the phase it began at, the cycle duration (s) and its
+    /// slope (s per cycle) it began with; over [`super::pace::CADENCE_BLEND_CYCLES`] the
+    /// duration goes to the walk's on a cubic Hermite.
+    pub(crate) rate_from: Option<(f64, f64, f64)>,
     pub(crate) stop: StopStage,
     pub(crate) start_x: f64,
     pub(crate) events: Vec<PaceEvent>,
