@@ -191,7 +191,8 @@ impl Walker {
     /// Advances by `dt_s` during a cadence blend: updates of at most [`super::MAX_UPDATE_CYCLES`]
     /// at the fastest rate of the blend, each at the rate where it starts.
     pub(super) fn advance_blending(&mut self, dt_s: f64, from_cycle: f64) {
-        let fastest = from_cycle.min(self.gait.r.cycle_s);
+        // A blend handed a slope may pass beyond both ends for a while: the rate now counts.
+        let fastest = from_cycle.min(self.gait.r.cycle_s).min(self.cycle_s_at(self.phase));
         let n = (dt_s / fastest / super::MAX_UPDATE_CYCLES).ceil().max(1.0) as usize;
         let sub = dt_s / n as f64;
         for _ in 0..n {
@@ -225,7 +226,7 @@ impl Walker {
     }
 
     /// Walks at `speed_mps` from master phase `at` (a heel strike): the parameters change as
-    /// a live edit would change them, and the cadence blends over the coming step.
+    /// a live edit would change them, and the cadence blends over the coming cycle.
     fn apply_speed(&mut self, speed_mps: f64, at: f64) {
         // A blend under way hands on its duration and its slope: restarting flat at this
         // heel strike was a 1.24x joint jerk at a ramp's second step.
