@@ -478,7 +478,7 @@ fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
     );
     let times: Vec<f64> = events.iter().map(|l| l.split('|').nth(1).unwrap().trim().parse().unwrap()).collect();
     assert!(times.windows(2).all(|w| w[0] <= w[1]), "{times:?}");
-    assert!((times[0] - 4.0).abs() < 0.1 && (times[4] - 11.5).abs() < 0.1, "the schedule's times: {times:?}");
+    assert!((times[0] - 4.0).abs() < 0.1 && (times[4] - 12.0).abs() < 0.1, "the schedule's times: {times:?}");
     let png = image::open(dir.join("plots/speed.png")).expect("plots/speed.png decodes");
     assert_eq!((png.width(), png.height()), (1600, 1000));
     let svg = read(&dir, "plots/speed.svg");

@@ -138,8 +138,8 @@ pub(crate) fn section(md: &mut String, run: &Run) {
 /// right gait cycles in it, and which one the figures above were measured on.
 fn plateau_table(md: &mut String, run: &Run, parts: &[Part]) {
     md.push_str(
-        "\nA plateau is steady from the step after its speed was reached to the next speed or stop asked. Each \
-         is measured here over its whole steps (heel strike to heel strike, either foot), so that one shorter \
+        "\nA plateau is steady from the end of the cadence blend after its speed was reached (two steps on) \
+         to the next speed or stop asked. Each is measured here over its whole steps (heel strike to heel strike, either foot), so that one shorter \
          than a gait cycle still shows its pace; the figures at the top over the whole right gait cycles of \
          the one marked *measured* (the plateau with the most of them).\n\n\
          | plateau | asked (m/s) | walked (m/s) | cadence (steps/min) | stride (m) | stance (%) | time (s) | steps | cycles |\n\
