@@ -10,6 +10,7 @@
 //! The cost is the mean RMS difference (deg) of the three curves, plus penalties that make a
 //! walk that skates, sinks into the ground or fails to reach worse than any that does not.
 
+use crate::config::cross_check;
 use crate::config::schema::{self, Value};
 use crate::error::Result;
 use crate::model::params::{Resolved, WalkParams};
@@ -72,8 +73,14 @@ pub struct FitResult {
     pub params: WalkParams,
 }
 
-/// The fit's cost of one walk, and its comparison; +∞ for a walk that cannot be measured.
+/// The fit's cost of one walk, and its comparison; +∞ for a walk that cannot be measured,
+/// and for keys the config's own cross-key rules reject (each fitted key's range alone does
+/// not keep `legs.heel_rise` 0.05 of a cycle after `legs.foot_flat`: a fit once wrote a config
+/// that `gaitlab check` refused).
 fn cost_of(path: &Path, params: &WalkParams, reference: &Reference) -> (f64, Option<Comparison>) {
+    if !cross_check(params).is_empty() {
+        return (f64::INFINITY, None);
+    }
     let Ok(walk) = measure::measure(path, params) else { return (f64::INFINITY, None) };
     let figure = |k: &str| walk.summary.iter().find(|(n, _)| n == k).map_or(f64::NAN, |(_, v)| *v);
     let c = normative::compare_measured(&walk, reference);
@@ -216,5 +223,29 @@ mod tests {
         assert!((x[0] - 0.3).abs() < 0.01 && (x[1] - 0.7).abs() < 0.01, "{x:?}");
         // The third minimum lies outside the cube: the search ends on its face.
         assert!(x[2] == 0.0 && (v - 0.25).abs() < 1e-3, "{x:?} {v}");
+    }
+
+    #[test]
+    fn keys_inside_their_ranges_that_the_config_rules_reject_are_never_a_fit() {
+        // Both inside FIT_KEYS' ranges, but heel rise only 0.045 of a cycle after foot flat.
+        let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
+        let path = Path::new("default.toml");
+        let mut p = WalkParams::default();
+        let u = |key: &str, v: f64| {
+            let k = FIT_KEYS.iter().find(|k| k.key == key).unwrap();
+            (v - k.min) / (k.max - k.min)
+        };
+        let start: Vec<f64> = FIT_KEYS.iter().map(|k| (k.start)(&p, &p.resolve())).collect();
+        let mut keys: Vec<f64> = FIT_KEYS.iter().zip(&start).map(|(k, v)| (v - k.min) / (k.max - k.min)).collect();
+        keys[3] = u("legs.foot_flat", 0.185);
+        keys[4] = u("legs.heel_rise", 0.23);
+        let rejected = with_keys(&p, &keys);
+        assert!(!cross_check(&rejected).is_empty());
+        assert_eq!(cost_of(path, &rejected, &reference).0, f64::INFINITY);
+        // 0.06 after: accepted, and a walk like any other.
+        keys[4] = u("legs.heel_rise", 0.245);
+        p = with_keys(&p, &keys);
+        assert!(cross_check(&p).is_empty());
+        assert!(cost_of(path, &p, &reference).0.is_finite());
     }
 }
