@@ -27,7 +27,8 @@ use crate::model::walk::pace::{CADENCE_BLEND_CYCLES, PaceEventKind, WalkState};
 /// What a stretch of the walk was doing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PartKind {
-    /// Before the walk's first right heel strike.
+    /// Before the walk's first right heel strike; after a start from standing, from the
+    /// pelvis joining the walk's path to the heel strike after the second step's.
     StartUp,
     /// Walking steadily at the asked speed.
     Plateau,
@@ -174,6 +175,10 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     let start_up_end = right.first().copied().unwrap_or(frames.len());
     let mut events = run.pace_events.iter().peekable();
     let mut asked = run.start_speed_mps;
+    // The speed a start from standing sets off at: the last asked before the stop.
+    let mut walk_speed = asked;
+    // A start from standing's start-up runs to this frame (exclusive).
+    let mut started_until = 0;
     // A speed change runs to this frame (exclusive); `usize::MAX` until its speed is reached.
     let mut change_until = 0;
     let mut stop_stage = None;
@@ -182,7 +187,7 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     for (i, f) in frames.iter().enumerate() {
         while let Some(e) = events.next_if(|e| e.time_s < f.time_s - 1e-9) {
             match e.kind {
-                PaceEventKind::SpeedAsked(v) => (asked, change_until) = (v, usize::MAX),
+                PaceEventKind::SpeedAsked(v) => (asked, walk_speed, change_until) = (v, v, usize::MAX),
                 // The reaching heel strike is frame `i`; steady from the heel strike that
                 // ends the cadence blend it started.
                 PaceEventKind::SpeedReached(_) => {
@@ -192,6 +197,12 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
                 PaceEventKind::StopAsked => asked = 0.0,
                 PaceEventKind::Braking => stop_stage = Some(PartKind::Braking),
                 PaceEventKind::Closing => stop_stage = Some(PartKind::Closing),
+                PaceEventKind::StartAsked => (asked, stop_stage) = (walk_speed, None),
+                // The pelvis is on the walk's path from frame `i`; the second step lands at the
+                // next heel strike, and the walk is steady from the one after.
+                PaceEventKind::Walking => {
+                    started_until = steps.iter().copied().filter(|&s| s > i).nth(1).unwrap_or(frames.len());
+                }
                 // Standing (and any event a later walk adds): the walker's state says it.
                 _ => {}
             }
@@ -200,7 +211,7 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
             (Some(WalkState::Stopping), Some(stage)) => stage,
             (Some(&state), _) if state != WalkState::Walking => PartKind::NotWalking(state),
             _ if i < change_until => PartKind::SpeedChange,
-            _ if i < start_up_end => PartKind::StartUp,
+            _ if i < start_up_end || i < started_until => PartKind::StartUp,
             _ => PartKind::Plateau,
         };
         labels.push((kind, asked));

@@ -119,8 +119,9 @@ const SCHEDULE_DOC: &str = "\
 # [[walk.schedule]] changes the pace while walking; none by default (one steady speed).
 # Each entry: when, time_s (0 to 86400 s) or distance_m (0 to 100000 m, pelvis travel),
 # and what, speed_mps (0.4 to 2 m/s, reached over the next two steps) or stop = true (a
-# braking step, the trailing foot closes beside it, the body settles to standing).
-# Entries fire in file order. Example:
+# braking step, the trailing foot closes beside it, the body settles to standing) or
+# start = true (with time_s: sets off from standing; as the first entry the walk begins
+# standing, feet side by side). Entries fire in file order. Example:
 # [[walk.schedule]]
 # time_s = 4.0
 # speed_mps = 1.6
@@ -135,6 +136,7 @@ fn schedule_entry(entry: &PaceEntry) -> String {
     let what = match entry.action {
         PaceAction::Speed(v) => format!("speed_mps = {}", toml_number(v)),
         PaceAction::Stop => "stop = true".to_string(),
+        PaceAction::Start => "start = true".to_string(),
     };
     format!("\n[[walk.schedule]]\n{when}\n{what}\n")
 }

@@ -3,11 +3,13 @@
 //! ```toml
 //! [[walk.schedule]]
 //! time_s = 4.0        # or distance_m = 5.0: when
-//! speed_mps = 1.6     # or stop = true: what
+//! speed_mps = 1.6     # or stop = true, or start = true: what
 //! ```
 //!
-//! Each entry takes exactly one of `time_s` / `distance_m` and one of `speed_mps` / `stop`;
-//! entries fire in file order, so the times (and the distances) must not go back.
+//! Each entry takes exactly one of `time_s` / `distance_m` and one of `speed_mps` / `stop` /
+//! `start`; entries fire in file order, so the times (and the distances) must not go back. A
+//! start sets off from standing: it is the first entry (the walk then begins standing) or
+//! follows a stop, and takes a time (a body at rest travels no distance to trigger it).
 
 use super::{Loader, Place, in_file_order, number};
 use crate::model::schedule::{PaceAction, PaceEntry, PaceTrigger};
@@ -22,11 +24,12 @@ pub const MAX_DISTANCE_M: f64 = 100_000.0;
 pub const MAX_ENTRIES: usize = 1000;
 
 /// The keys an entry takes, with what each needs.
-const ENTRY_KEYS: [(&str, &str); 4] = [
+const ENTRY_KEYS: [(&str, &str); 5] = [
     ("time_s", "a number from 0 to 86400 s"),
     ("distance_m", "a number from 0 to 100000 m"),
     ("speed_mps", "a number from 0.4 to 2 m/s"),
     ("stop", "true"),
+    ("start", "true"),
 ];
 
 /// What one entry's table gave, before it is checked whole.
@@ -36,6 +39,7 @@ struct Parts {
     distance_m: Option<f64>,
     speed_mps: Option<f64>,
     stop: bool,
+    start: bool,
 }
 
 impl Loader {
@@ -99,6 +103,7 @@ impl Loader {
             let value = v.get_ref();
             let ok = match name {
                 "stop" => matches!(value, DeValue::Boolean(true)).then(|| parts.stop = true).is_some(),
+                "start" => matches!(value, DeValue::Boolean(true)).then(|| parts.start = true).is_some(),
                 _ => {
                     let (min, max) = match name {
                         "time_s" => (0.0, MAX_TIME_S),
@@ -134,28 +139,45 @@ impl Loader {
                 None
             }
         };
-        let action = match (parts.speed_mps, parts.stop) {
-            (Some(v), false) => Some(PaceAction::Speed(v)),
-            (None, true) => Some(PaceAction::Stop),
-            (Some(_), true) => {
-                self.error(at, key, "takes speed_mps or stop, not both");
-                None
-            }
-            (None, false) => {
+        let action = self.entry_action(key, &parts, at, sound);
+        Some(PaceEntry { trigger: trigger?, action: action? }).filter(|_| sound)
+    }
+
+    /// What an entry asks for, from its parts; `None` (with the problem recorded) if it
+    /// names none, or more than one.
+    fn entry_action(&mut self, key: &str, parts: &Parts, at: &Place, sound: bool) -> Option<PaceAction> {
+        let action = match (parts.speed_mps, parts.stop, parts.start) {
+            (Some(v), false, false) => Some(PaceAction::Speed(v)),
+            (None, true, false) => Some(PaceAction::Stop),
+            (None, false, true) => Some(PaceAction::Start),
+            (None, false, false) => {
                 if sound {
-                    self.error(at, key, "needs a speed_mps or stop = true: what the entry asks for");
+                    self.error(at, key, "needs a speed_mps, stop = true or start = true: what the entry asks for");
                 }
                 None
             }
+            _ => {
+                self.error(at, key, "takes one of speed_mps, stop and start, not two");
+                None
+            }
         };
-        Some(PaceEntry { trigger: trigger?, action: action? }).filter(|_| sound)
+        if action == Some(PaceAction::Start) && parts.distance_m.is_some() {
+            self.error(at, key, "a start takes time_s, not distance_m: a body at rest travels no distance");
+            return None;
+        }
+        action
     }
 
     /// Entries fire in file order: a time (or a distance) before the previous one's would
     /// never be noticed.
     fn check_order(&mut self, entries: &[(PaceEntry, Place, usize)]) {
         let (mut last_time, mut last_distance) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-        for (entry, at, n) in entries {
+        for (k, (entry, at, n)) in entries.iter().enumerate() {
+            let after_stop = k > 0 && entries[k - 1].0.action == PaceAction::Stop;
+            if entry.action == PaceAction::Start && k > 0 && !after_stop {
+                let message = "a start must be the first entry (the walk then begins standing) or follow a stop";
+                self.error(at, &format!("walk.schedule[{n}].start"), message);
+            }
             let (last, now, name, unit) = match entry.trigger {
                 PaceTrigger::TimeS(t) => (&mut last_time, t, "time_s", "s"),
                 PaceTrigger::DistanceM(d) => (&mut last_distance, d, "distance_m", "m"),

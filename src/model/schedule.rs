@@ -18,6 +18,9 @@ pub enum PaceAction {
     /// Finish the walk: a braking step, then the trailing foot closes beside the leading one
     /// and the body settles to standing.
     Stop,
+    /// Set off from standing: the first entry of a walk that begins standing, or one after a
+    /// stop.
+    Start,
 }
 
 /// One `[[walk.schedule]]` entry.

@@ -165,7 +165,7 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::NextPanel], "next panel (small screens)"),
     (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
     (&[Action::NextSolver, Action::Export], "next leg IK solver (live) / export a report"),
-    (&[Action::PaceDown, Action::PaceUp, Action::StopWalk], "walk slower / faster (0.1 m/s) / stop"),
+    (&[Action::PaceDown, Action::PaceUp, Action::StopWalk], "slower / faster (0.1 m/s) / stop, start"),
     (&[Action::NextPoint, Action::PrevPoint, Action::LeavePoints], "curve point: select (arrows move it) / done"),
 ];
 

@@ -1,4 +1,4 @@
-//! The lab's pace keys: walk slower or faster while walking, or stop. A pace change is an
+//! The lab's pace keys: walk slower or faster while walking, stop, or set off again. A pace change is an
 //! edit of `walk.speed_mps` like any other (undoable, saved by `s`), but the walk takes it as
 //! the pace schedule does — over the next two heel strikes, never under a planted foot —
 //! instead of as a live edit.
@@ -12,7 +12,7 @@ use crate::model::walk::pace::WalkState;
 const PACE_STEP_MPS: f64 = 0.1;
 
 impl App {
-    /// `-`, `+` and `w`: slower, faster, stop. False for any other action.
+    /// `-`, `+` and `w`: slower, faster, stop or (standing) start. False for any other action.
     pub(super) fn pace_action(&mut self, action: Action) -> bool {
         if !matches!(action, Action::PaceDown | Action::PaceUp | Action::StopWalk) {
             return false;
@@ -24,13 +24,24 @@ impl App {
     fn pace(&mut self, action: Action) {
         match self.walker.walk_state() {
             WalkState::Walking => {}
+            WalkState::Starting => {
+                self.message = Some("starting: the first step is under way (w stops once walking)".into());
+                return;
+            }
             WalkState::Stopping => {
-                self.message = Some("stopping: the walk comes to rest (r walks again)".into());
+                self.message = Some("stopping: the walk comes to rest (w sets off again once standing)".into());
+                return;
+            }
+            WalkState::Standing if action == Action::StopWalk => {
+                self.walker.request_start();
+                self.message = Some(format!(
+                    "starting from standing at {:.1} m/s: a short first step, then full steps",
+                    self.params.walk.speed_mps
+                ));
                 return;
             }
             WalkState::Standing => {
-                self.message =
-                    Some("standing (r walks again, from mid-stride: a start from standing is not built)".into());
+                self.message = Some("standing: w sets off (the pace keys work while walking)".into());
                 return;
             }
         }

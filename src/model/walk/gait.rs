@@ -147,9 +147,9 @@ impl Gait {
     pub fn pelvis_with_plan(&self, plan: &PelvisPlan, phase: f64) -> PelvisPose {
         let (x, y) = plan.position(phase, &self.traj);
         let p = phase.rem_euclid(1.0);
-        // At the walk's end the sway and the rotations fade to standing (zero) with the
-        // settling's weight.
-        let keep = plan.settling().map_or(1.0, |s| 1.0 - s.weight(phase));
+        // Setting off and at the walk's end the sway and the rotations fade from and to
+        // standing (zero).
+        let keep = plan.walking_weight(phase);
         let live = &self.live;
         // Obliquity and tilt raise and lower the hips: a phase in a later cycle takes the
         // curves that will play then, so that a step's reach is guarded with the hip heights

@@ -43,6 +43,8 @@ impl Walker {
             let q = phase - leg.cycle_start;
             match leg.phase {
                 LegPhase::LoadingResponse => r.foot_flat = r.foot_flat.max(q),
+                // A leg standing for good has no heel rise to keep behind it.
+                LegPhase::Midstance if self.holds_midstance(leg) => {}
                 LegPhase::Midstance => r.heel_rise = r.heel_rise.max(q),
                 LegPhase::HeelRise => {
                     r.toe_off = r.toe_off.max(q);

@@ -15,6 +15,7 @@
 
 pub mod frame;
 pub mod gait;
+mod initiation;
 pub mod leg;
 mod live;
 pub mod pace;
@@ -39,6 +40,7 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
 use crate::model::params::{Resolved, WalkParams};
+use crate::model::schedule::PaceAction;
 use crate::model::terrain::Terrain;
 use gait::{LiveCurves, cycle_targets, trajectory_curves};
 use glam::DVec3;
@@ -197,11 +199,16 @@ impl Walker {
             pelvis: PelvisPose::new(DVec3::ZERO, 0.0, 0.0, 0.0, 0.0),
             arm_hang,
             upper: UpperBody::default(),
-            pace: Pace::new(&[], 0.0),
+            pace: Pace::new(&[], 0.0, false),
         };
-        walker.plan_start();
+        let standing = params.schedule.first().is_some_and(|e| e.action == PaceAction::Start);
+        if standing {
+            walker.stand_still()
+        } else {
+            walker.plan_start()
+        }
         walker.evaluate_now();
-        walker.pace = Pace::new(&params.schedule, walker.pelvis.position.x);
+        walker.pace = Pace::new(&params.schedule, walker.pelvis.position.x, standing);
         Ok(walker)
     }
 
@@ -253,6 +260,7 @@ impl Walker {
         self.plan.forget_before(target - 1.0);
         self.evaluate_now();
         self.check_standing();
+        self.check_walking();
     }
 
     /// Master phase at which `side`'s current phase ends.
@@ -302,9 +310,10 @@ impl Walker {
         let mut shoulder =
             [self.gait.live.shoulder[0].eval(arm_phase[0]), self.gait.live.shoulder[1].eval(arm_phase[1])];
         let mut elbow = [self.gait.live.elbow[0].eval(arm_phase[0]), self.gait.live.elbow[1].eval(arm_phase[1])];
-        if let Some(settle) = self.plan.settling() {
-            // At the walk's end the arms come to hang: the swing fades about its middle.
-            let keep = 1.0 - settle.weight(self.phase);
+        if self.plan.settling().is_some() || self.plan.launching().is_some() {
+            // Setting off and at the walk's end the arms swing from and come to hanging: the
+            // swing fades in and out about its middle.
+            let keep = self.plan.walking_weight(self.phase);
             let elbow_mid = self.gait.r.elbow_min_flex + 0.5 * self.gait.r.elbow_range;
             for side in 0..2 {
                 shoulder[side] *= keep;

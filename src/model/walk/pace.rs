@@ -17,7 +17,7 @@ use crate::model::walk::gait::place_footfall;
 use crate::model::walk::leg::LegPose;
 use crate::model::walk::leg::{Footfall, LegPhase, LegState, foot_rotation};
 pub use crate::model::walk::pace_state::{PaceEvent, PaceEventKind, WalkState};
-use crate::model::walk::pace_state::{StepKind, StopStage};
+use crate::model::walk::pace_state::{StartStage, StepKind, StopStage};
 use crate::model::walk::pelvis::PelvisKey;
 use crate::model::walk::pelvis::Settle;
 use crate::model::walk::step_problem::StepRecord;
@@ -64,7 +64,11 @@ impl Walker {
     /// closing step none), settled on the ground.
     pub(super) fn next_footfall(&self, side: Side, other: &Footfall) -> (StepKind, Footfall) {
         let kind = self.next_step_kind();
+        if let Some(first) = self.first_step_footfall() {
+            return (kind, first);
+        }
         let share = match kind {
+            StepKind::Starting => super::initiation::FIRST_STEP,
             StepKind::Steady => 1.0,
             StepKind::Braking => BRAKING_STEP,
             StepKind::Closing => 0.0,
@@ -85,7 +89,8 @@ impl Walker {
         [ms_before, ds, ms_after]: [PelvisKey; 3],
     ) -> StepRecord {
         let step = landing.footfall.step;
-        if kind == StepKind::Closing {
+        // The first step from standing too: the pelvis's launch aims at its fixed-rule key.
+        if matches!(kind, StepKind::Closing | StepKind::Starting) {
             return fixed_record(side, at, step, &ms_before, &ds, &ms_after);
         }
         self.choose_double_support(side, at, step, landing, ms_before, ds, ms_after)
@@ -95,7 +100,7 @@ impl Walker {
     /// heel covers (1 for every other step, and on stairs, where the nosing must be cleared).
     pub(super) fn swing_lift(&self, kind: StepKind, from: &Footfall, to: &Footfall, toe_off_heel_x: f64) -> f64 {
         match kind {
-            StepKind::Closing if even_between(from, to) => {
+            StepKind::Closing | StepKind::Starting if even_between(from, to) => {
                 (0.5 * (to.heel.x - toe_off_heel_x) / self.gait.r.stride_m).clamp(0.15, 1.0)
             }
             _ => 1.0,
@@ -105,6 +110,9 @@ impl Walker {
     /// What the walker is doing.
     #[must_use]
     pub fn walk_state(&self) -> WalkState {
+        if self.pace.start != StartStage::None {
+            return WalkState::Starting;
+        }
         match self.pace.stop {
             StopStage::None => WalkState::Walking,
             StopStage::Standing { .. } => WalkState::Standing,
@@ -155,6 +163,7 @@ impl Walker {
             match entry.action {
                 PaceAction::Speed(v) => self.request_speed(v),
                 PaceAction::Stop => self.request_stop(),
+                PaceAction::Start => self.request_start(),
             }
         }
     }
@@ -246,6 +255,9 @@ impl Walker {
 
     /// The kind of step to plan at the coming toe-off.
     pub(super) fn next_step_kind(&self) -> StepKind {
+        if self.first_step_footfall().is_some() {
+            return StepKind::Starting;
+        }
         match self.pace.stop {
             StopStage::Asked => StepKind::Braking,
             StopStage::Braking { .. } => StepKind::Closing,
@@ -255,6 +267,10 @@ impl Walker {
 
     /// After a step onto `to` of `kind` is planned.
     pub(super) fn step_planned(&mut self, kind: StepKind, to: &Footfall) {
+        if kind == StepKind::Starting {
+            self.first_step_planned();
+            return;
+        }
         let (stage, event) = match (kind, self.pace.stop) {
             (StepKind::Braking, _) => (StopStage::Braking { final_step: to.step }, PaceEventKind::Braking),
             (StepKind::Closing, StopStage::Braking { final_step }) => {
@@ -274,7 +290,9 @@ impl Walker {
     /// a tread's nosing to clear.
     pub(super) fn closing_heel_rise_share(&self, leg: &LegState) -> f64 {
         let level = self.footfalls.last().is_some_and(|braking| even_between(&leg.footfall, braking));
-        if matches!(self.pace.stop, StopStage::Braking { .. }) && level { CLOSING_HEEL_RISE } else { 1.0 }
+        let closing =
+            if matches!(self.pace.stop, StopStage::Braking { .. }) && level { CLOSING_HEEL_RISE } else { 1.0 };
+        closing * self.start_heel_rise_share(leg)
     }
 
     /// Whether `leg` stays in midstance for good: it stands on the braking or the closing

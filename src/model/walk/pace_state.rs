@@ -1,12 +1,17 @@
-//! The pace's state (see `pace.rs`, which plays it): what the walker is doing, the events
-//! reports show, and the schedule, ramp, cadence blend and stop a walker carries. Its own
-//! file so the walker's struct can hold it without importing the `impl Walker` file back.
+//! The pace's state (see `pace.rs` and `initiation.rs`, which play it): what the walker is
+//! doing, the events reports show, and the schedule, ramp, cadence blend, start and stop a
+//! walker carries. Its own file so the walker's struct can hold it without importing the
+//! `impl Walker` files back.
 
+use crate::model::body::Side;
 use crate::model::schedule::PaceEntry;
+use crate::model::walk::leg::Footfall;
 
 /// What the walker is doing, as the lab's status line and the reports say it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum WalkState {
+    /// Setting off from standing: the first steps, until the pelvis has joined the walk's path.
+    Starting,
     /// Steady or changing pace.
     Walking,
     /// A stop is asked or under way.
@@ -20,6 +25,7 @@ impl WalkState {
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
+            WalkState::Starting => "starting",
             WalkState::Walking => "walking",
             WalkState::Stopping => "stopping",
             WalkState::Standing => "standing",
@@ -51,6 +57,12 @@ pub enum PaceEventKind {
     Closing,
     /// The body is at rest.
     Standing,
+    /// A start from standing was asked.
+    StartAsked,
+    /// The first step of a start was planned: the initiating foot leaves the ground.
+    FirstStep,
+    /// The start is over: the pelvis moves on the walk's own path.
+    Walking,
 }
 
 impl PaceEventKind {
@@ -64,6 +76,9 @@ impl PaceEventKind {
             PaceEventKind::Braking => "braking",
             PaceEventKind::Closing => "closing",
             PaceEventKind::Standing => "standing",
+            PaceEventKind::StartAsked => "start_asked",
+            PaceEventKind::FirstStep => "first_step",
+            PaceEventKind::Walking => "walking",
         }
     }
 }
@@ -86,9 +101,27 @@ pub(crate) enum StopStage {
     },
 }
 
+/// Where a start from standing is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum StartStage {
+    None,
+    /// Started: the first step, onto `first` (planned when the start was asked, so the
+    /// pelvis's launch could aim at its double support), is still to be planned.
+    FirstStep {
+        first: Footfall,
+        initiator: Side,
+    },
+    /// The first step is planned; the pelvis leaves its launch at `launch_end` (master phase).
+    Launching {
+        launch_end: f64,
+    },
+}
+
 /// The kind of step the planner is to plan next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum StepKind {
+    /// The first step from standing: [`super::initiation::FIRST_STEP`] of a steady step.
+    Starting,
     Steady,
     Braking,
     Closing,
@@ -106,19 +139,22 @@ pub(crate) struct Pace {
     /// duration goes to the walk's on a cubic Hermite.
     pub(crate) rate_from: Option<(f64, f64, f64)>,
     pub(crate) stop: StopStage,
+    pub(crate) start: StartStage,
     pub(crate) start_x: f64,
     pub(crate) events: Vec<PaceEvent>,
 }
 
 impl Pace {
-    /// The pace of a walk with `entries`, its pelvis starting at `start_x`.
-    pub(crate) fn new(entries: &[PaceEntry], start_x: f64) -> Self {
+    /// The pace of a walk with `entries`, its pelvis starting at `start_x`, standing (both
+    /// feet held, numbered −1 and 0) or walking.
+    pub(crate) fn new(entries: &[PaceEntry], start_x: f64, standing: bool) -> Self {
         Pace {
             entries: entries.to_vec(),
             next: 0,
             ramp: None,
             rate_from: None,
-            stop: StopStage::None,
+            stop: if standing { StopStage::Standing { final_step: -1 } } else { StopStage::None },
+            start: StartStage::None,
             start_x,
             events: Vec::new(),
         }

@@ -45,6 +45,85 @@ pub struct PelvisPlan {
     /// The walk's end, once planned: from its start the pelvis leaves the keys and comes to
     /// rest over the feet.
     settle: Option<Settle>,
+    /// A start from standing, once asked: until its end the pelvis sets off on it instead of
+    /// the keys.
+    launch: Option<Launch>,
+}
+
+/// How the pelvis sets off from standing (see `docs/gait-model.md`, §13).
+///
+/// Forward, a quintic Hermite from rest at `from_phase` (no speed, no acceleration) to the
+/// first double-support key, which it meets with the keyed path's own position, speed and
+/// acceleration, so that the start has no jump in velocity nor in acceleration (a cubic, as the
+/// settle uses, would leave the latter: a joint jerk at the hand-over). Its span is chosen
+/// so the end speed times the span is twice the distance: the quintic's speed then rises
+/// without ever turning back (up to 2.5 times it does not; beyond, the pelvis would first move
+/// backward). The height follows the keys, the first of which is the standing height at
+/// `from_phase`; the sway, the rotations and the arm swing fade in by a smoothstep over the
+/// span.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Launch {
+    /// Master phase the pelvis starts to move at.
+    pub from_phase: f64,
+    /// Phases it lasts.
+    pub span: f64,
+    /// Forward position at rest (m).
+    pub x0: f64,
+    /// Forward position at its end: the double-support key's (m).
+    pub x1: f64,
+    /// Forward speed at its end times the span (m).
+    pub m1: f64,
+    /// Forward acceleration at its end times the span squared (m).
+    pub a1: f64,
+}
+
+impl Launch {
+    /// Ratio of the end speed times the span to the distance the launch covers.
+    pub const SPEED_TO_DISTANCE: f64 = 2.0;
+
+    /// A launch from rest at `x0` to `x1`, reached at `end_phase` with speed `v1` (m per
+    /// cycle) and acceleration `a1` (m per cycle²).
+    #[must_use]
+    pub fn new(end_phase: f64, x0: f64, (x1, v1, a1): (f64, f64, f64)) -> Self {
+        let distance = (x1 - x0).max(0.02);
+        let span = Self::span_for(distance, v1);
+        Launch { from_phase: end_phase - span, span, x0, x1: x0 + distance, m1: v1 * span, a1: a1 * span * span }
+    }
+
+    /// The span (cycles) of a launch over `distance` (m) ending at speed `v1` (m per cycle).
+    #[must_use]
+    pub fn span_for(distance: f64, v1: f64) -> f64 {
+        Self::SPEED_TO_DISTANCE * distance.max(0.02) / v1.max(1e-3)
+    }
+
+    /// Progress through the launch at `phase`: 0 before, 1 once on the keyed path.
+    #[must_use]
+    pub fn progress(&self, phase: f64) -> f64 {
+        ((phase - self.from_phase) / self.span).clamp(0.0, 1.0)
+    }
+
+    /// The blend weight of the walking values at `phase` (smoothstep of the progress).
+    #[must_use]
+    pub fn weight(&self, phase: f64) -> f64 {
+        let s = self.progress(phase);
+        s * s * (3.0 - 2.0 * s)
+    }
+
+    /// Master phase at which the pelvis joins the keyed path.
+    #[must_use]
+    pub fn end_phase(&self) -> f64 {
+        self.from_phase + self.span
+    }
+
+    /// Forward position at `phase` (before the end).
+    fn x(&self, phase: f64) -> f64 {
+        let s = self.progress(phase);
+        let (s3, s4, s5) = (s * s * s, s * s * s * s, s * s * s * s * s);
+        let h_distance = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
+        let h_speed = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
+        let h_acceleration = 0.5 * s3 - s4 + 0.5 * s5;
+        self.x0 + h_distance * (self.x1 - self.x0) + h_speed * self.m1 + h_acceleration * self.a1
+    }
 }
 
 /// How the pelvis comes to rest at the end of a walk (see `docs/gait-model.md`, §13).
@@ -77,6 +156,12 @@ pub struct Settle {
 }
 
 impl Settle {
+    /// A body already at rest at (`x`, `y`) by `phase`: a walk that begins standing.
+    #[must_use]
+    pub fn at_rest(phase: f64, (x, y): (f64, f64)) -> Self {
+        Settle { from_phase: phase - 1.0, span: 1.0, x0: x, m0: 0.0, x1: x, y1: y, y_delay: 0.0 }
+    }
+
     /// A settling from `x0`, moving at `v0` m per cycle at `from_phase`, to rest at `x1`,
     /// taking as near `wanted_span` cycles as the no-overshoot bounds allow.
     #[must_use]
@@ -137,6 +222,30 @@ impl PelvisPlan {
     #[must_use]
     pub fn settling(&self) -> Option<&Settle> {
         self.settle.as_ref()
+    }
+
+    /// A start from standing, if one was made.
+    #[must_use]
+    pub fn launching(&self) -> Option<&Launch> {
+        self.launch.as_ref()
+    }
+
+    /// Sets off from standing: the keys are dropped for `keys` (the standing key and those
+    /// after it), the settle ends, and the pelvis leaves rest on `launch`.
+    pub fn launch(&mut self, keys: &[PelvisKey], launch: Launch) {
+        self.keys.clear();
+        self.keys.extend(keys.iter().copied());
+        self.settle = None;
+        self.launch = Some(launch);
+    }
+
+    /// How much of the walk's sway, rotations and arm swing is in force at `phase`: 0
+    /// standing, 1 walking, in between while setting off or settling.
+    #[must_use]
+    pub fn walking_weight(&self, phase: f64) -> f64 {
+        let settling = self.settle.as_ref().map_or(0.0, |s| s.weight(phase));
+        let launched = self.launch.as_ref().map_or(1.0, |l| l.weight(phase));
+        (1.0 - settling) * launched
     }
 
     /// Appends a key; keys must come in phase order.
@@ -207,11 +316,12 @@ impl PelvisPlan {
         let w = 1.0 - u;
         let x = a.x + dx * forward.eval(u) + d0 * u * w * w - d1 * u * u * w;
         let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
-        match &self.settle {
-            Some(settle) if phase > settle.from_phase => {
+        match (&self.settle, &self.launch) {
+            (Some(settle), _) if phase > settle.from_phase => {
                 let w = settle.height_weight(phase);
                 (settle.x(phase), y + (settle.y1 - y) * w)
             }
+            (_, Some(launch)) if phase < launch.end_phase() => (launch.x(phase), y),
             _ => (x, y),
         }
     }

@@ -45,7 +45,7 @@ impl Walker {
         let (kind, to) = self.next_footfall(side, &other);
         let strike_phase = self.legs[i].cycle_start + 1.0;
         // Pelvis keys: the coming double support (position chosen below), this leg's mid-stance.
-        let ms_before = self.push_step_keys(&other, &to, strike_phase);
+        let ms_before = self.step_keys(kind, &other, &to, strike_phase);
         if kind == StepKind::Braking {
             self.begin_settle(at, &to);
         }
@@ -168,6 +168,18 @@ impl Walker {
         heel_height
     }
 
+    /// The keys of a step of `kind` onto `leading`, pushed (see [`Self::push_step_keys`]);
+    /// the first step from standing keeps the keys its start planned, as the pelvis's launch
+    /// aims at their double support. Returns the mid-stance key before them.
+    fn step_keys(&mut self, kind: StepKind, trailing: &Footfall, leading: &Footfall, strike_phase: f64) -> PelvisKey {
+        match kind {
+            StepKind::Starting => {
+                *self.plan.keys().find(|k| k.kind == KeyKind::MidStance).expect("planned at the start")
+            }
+            _ => self.push_step_keys(trailing, leading, strike_phase),
+        }
+    }
+
     /// Pushes the keys of the step onto `leading` (striking at `strike_phase`, `trailing`
     /// behind): its double support, at the fixed rule until the optimiser moves it, and its
     /// mid-stance, at that double support's pace. Returns the mid-stance key before them.
@@ -184,7 +196,7 @@ impl Walker {
     /// `strike_phase`: ahead of the heel by the offset parameter, at the mid-stance height
     /// above the ground under the foot (so the stance knee's extension is the same on any
     /// terrain, [6.3.3, fig 6.14]).
-    fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
+    pub(super) fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
         let r = &self.gait.r;
         PelvisKey {
             phase: strike_phase + 0.5 * r.toe_off,
@@ -199,7 +211,7 @@ impl Walker {
     /// `trailing` behind. Height: the vertical range below the mid-stance height over the
     /// *lower* of the two footfalls — stepping down lowers the minimum so the leading leg
     /// reaches, stepping up keeps it and the knee bends [fig 6.14].
-    fn double_support_key(
+    pub(super) fn double_support_key(
         &self,
         trailing: &Footfall,
         leading: &Footfall,
