@@ -42,7 +42,12 @@ fn problems(params: &WalkParams, steps: usize) -> Vec<(Walker, StepProblem)> {
         assert!(frames < 100_000, "the walk stopped planning steps");
         if walker.step_plans().len() > seen {
             seen = walker.step_plans().len();
-            out.push((walker.clone(), walker.last_step_problem().unwrap().clone()));
+            // A start's first step is not chosen: the pelvis launches onto its fixed-rule key.
+            if walker.step_plans().last().unwrap().optimisation.method.is_some() || !params.optimiser.enabled {
+                if let Some(problem) = walker.last_step_problem() {
+                    out.push((walker.clone(), problem.clone()));
+                }
+            }
         }
     }
     out

@@ -77,7 +77,7 @@ fn update_writes_stable_snapshots_and_a_second_run_passes() {
         assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     }
     let (first, second) = (snapshots(&a), snapshots(&b));
-    assert_eq!(first.len(), 12);
+    assert_eq!(first.len(), 13);
     assert_eq!(first, second, "snapshots differ between runs");
     for (name, body) in &first {
         assert!(!body.contains(&*a.to_string_lossy()) && !body.contains("/tmp"), "{name} holds a path");
@@ -90,7 +90,7 @@ fn update_writes_stable_snapshots_and_a_second_run_passes() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let lines: Vec<serde_json::Value> =
         text(&out.stdout).lines().map(|l| serde_json::from_str(l).expect("a JSON line")).collect();
-    assert_eq!(lines.len(), 12);
+    assert_eq!(lines.len(), 13);
     assert!(lines.iter().all(|l| l["status"] == "ok" && l["moved"].as_array().unwrap().is_empty()));
     // A snapshot within tolerance is left as it is by --update.
     let out = gaitlab(&a, &["snapshot", "configs", "--update"]);
@@ -109,22 +109,22 @@ fn a_changed_config_drifts_alone_with_its_moved_figures_in_table_junit_json_and_
     let out = gaitlab(&dir, &["snapshot", "configs", "--junit", "out/report.xml", "--plot", "plots"]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
     let stdout = text(&out.stdout);
-    for line in stdout.lines().take(12) {
+    for line in stdout.lines().take(13) {
         let drifted = line.starts_with("drift    configs/default.toml");
         assert!(drifted || line.starts_with("ok "), "{line}");
     }
-    let rows: Vec<&str> = stdout.lines().skip(13).collect();
+    let rows: Vec<&str> = stdout.lines().skip(14).collect();
     assert!(rows[0].starts_with("config") && rows[0].ends_with("allowed"), "{stdout}");
     assert!(rows[1..].iter().all(|r| r.starts_with("configs/default.toml ")), "{stdout}");
     assert!(stdout.contains(" hip_ext_max_deg ") && stdout.contains(" knee_flex_r_deg at "), "{stdout}");
-    assert!(text(&out.stderr).contains("1 of 12 configs failed: configs/default.toml (drift)"));
+    assert!(text(&out.stderr).contains("1 of 13 configs failed: configs/default.toml (drift)"));
 
     let xml = std::fs::read_to_string(dir.join("out/report.xml")).unwrap();
     let doc = roxmltree::Document::parse(&xml).expect("JUnit XML parses");
     let suite = doc.root_element();
     assert_eq!(
         (suite.tag_name().name(), suite.attribute("tests"), suite.attribute("failures")),
-        ("testsuite", Some("12"), Some("1"))
+        ("testsuite", Some("13"), Some("1"))
     );
     let failures: Vec<_> = doc.descendants().filter(|n| n.has_tag_name("failure")).collect();
     assert_eq!(failures.len(), 1);
@@ -173,7 +173,7 @@ fn a_change_below_tolerance_passes_and_a_missing_snapshot_fails() {
     assert_eq!(out.status.code(), Some(1));
     let stdout = text(&out.stdout);
     assert!(stdout.contains("missing  configs/mine.toml  no configs/mine.snap.json"), "{stdout}");
-    assert_eq!(stdout.lines().filter(|l| l.starts_with("ok ")).count(), 12, "{stdout}");
+    assert_eq!(stdout.lines().filter(|l| l.starts_with("ok ")).count(), 13, "{stdout}");
     let out = gaitlab(&dir, &["snapshot", "configs/mine.toml", "--json"]);
     let line: serde_json::Value = serde_json::from_str(text(&out.stdout).trim()).unwrap();
     assert_eq!(line["status"], "missing");

@@ -174,9 +174,10 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     let frames = &run.frames;
     let start_up_end = right.first().copied().unwrap_or(frames.len());
     let mut events = run.pace_events.iter().peekable();
-    let mut asked = run.start_speed_mps;
-    // The speed a start from standing sets off at: the last asked before the stop.
-    let mut walk_speed = asked;
+    // The speed a start from standing sets off at: the last asked before the stop (none is
+    // asked of a walk that begins standing until its start).
+    let mut walk_speed = run.start_speed_mps;
+    let mut asked = if run.states.first() == Some(&WalkState::Standing) { 0.0 } else { walk_speed };
     // A start from standing's start-up runs to this frame (exclusive).
     let mut started_until = 0;
     // A speed change runs to this frame (exclusive); `usize::MAX` until its speed is reached.

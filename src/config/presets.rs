@@ -18,6 +18,7 @@ pub static PRESETS: &[(&str, &str)] = &[
     ("slope_down", include_str!("../../configs/slope_down.toml")),
     ("rough", include_str!("../../configs/rough.toml")),
     ("pace", include_str!("../../configs/pace.toml")),
+    ("start_stop", include_str!("../../configs/start_stop.toml")),
 ];
 
 /// What the default preset is. `configs/default.toml` is `gaitlab init`'s output, which

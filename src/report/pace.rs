@@ -8,7 +8,7 @@ use super::plots::{Figure, Line, Panel, write_figure};
 use crate::analysis::Run;
 use crate::analysis::steady::{self, Part, PartKind};
 use crate::model::walk::frame::Frame;
-use crate::model::walk::pace::PaceEventKind;
+use crate::model::walk::pace::{PaceEventKind, WalkState};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -37,15 +37,22 @@ fn step_mean_speed(run: &Run) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// The asked speed over time: the config's, then each `SpeedAsked`; zero from a stop on.
+/// The asked speed over time: the config's, then each `SpeedAsked`; zero from a stop on (and
+/// before a first start), the last asked again from a start.
 fn asked_speed(run: &Run, start_mps: f64) -> Vec<(f64, f64)> {
     let end = run.frames.last().map_or(0.0, |f| f.time_s);
-    let mut points = vec![(0.0, start_mps)];
-    let mut now = start_mps;
+    // A walk that begins standing asks for no speed until its start.
+    let mut now = if run.states.first() == Some(&WalkState::Standing) { 0.0 } else { start_mps };
+    let mut points = vec![(0.0, now)];
+    let mut walk_mps = start_mps;
     for e in &run.pace_events {
         let to = match e.kind {
-            PaceEventKind::SpeedAsked(v) => v,
+            PaceEventKind::SpeedAsked(v) => {
+                walk_mps = v;
+                v
+            }
             PaceEventKind::StopAsked => 0.0,
+            PaceEventKind::StartAsked => walk_mps,
             _ => continue,
         };
         points.push((e.time_s, now));

@@ -100,10 +100,15 @@ impl Walker {
         self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::StartAsked });
         let p = self.phase;
         let first_boundary = (2.0 * p).ceil() / 2.0;
-        let plan = (0..8)
+        let mut plan = (0..8)
             .map(|k| self.start_plan(first_boundary + 0.5 * f64::from(k)))
             .find(|s| s.launch.from_phase >= p && s.cycle_start + self.gait.r.heel_rise > p)
             .expect("a later boundary always leaves room: the launch's span is fixed");
+        let flat_until = [
+            (plan.initiator, plan.cycle_start + self.gait.r.heel_rise),
+            (plan.initiator.other(), plan.cycle_start + 0.5 + self.gait.r.heel_rise),
+        ];
+        self.lower_for_flat_feet(&mut plan.keys, plan.launch, flat_until);
         self.begin_start(plan);
     }
 
@@ -146,10 +151,7 @@ impl Walker {
         let standing_phase = launch.from_phase.min(ms_stance.phase - 0.1);
         let standing =
             PelvisKey { phase: standing_phase, x: rest.0, y: rest.1, kind: KeyKind::DoubleSupport, pace: 0.0 };
-        let mut keys = [standing, ms_stance, ds, ms_first];
-        let flat_until = [(initiator, cycle_start + r.heel_rise), (initiator.other(), cycle_start + 0.5 + r.heel_rise)];
-        self.lower_for_flat_feet(&mut keys, launch, flat_until);
-        StartPlan { initiator, cycle_start, first, keys, launch }
+        StartPlan { initiator, cycle_start, first, keys: [standing, ms_stance, ds, ms_first], launch }
     }
 
     /// Lowers the stance leg's mid-stance key (`keys[1]`) where a leg whose foot stays flat
