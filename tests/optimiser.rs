@@ -43,10 +43,11 @@ fn problems(params: &WalkParams, steps: usize) -> Vec<(Walker, StepProblem)> {
         if walker.step_plans().len() > seen {
             seen = walker.step_plans().len();
             // A start's first step is not chosen: the pelvis launches onto its fixed-rule key.
-            if walker.step_plans().last().unwrap().optimisation.method.is_some() || !params.optimiser.enabled {
-                if let Some(problem) = walker.last_step_problem() {
-                    out.push((walker.clone(), problem.clone()));
-                }
+            let chosen = walker.step_plans().last().unwrap().optimisation.method.is_some();
+            if (chosen || !params.optimiser.enabled)
+                && let Some(problem) = walker.last_step_problem()
+            {
+                out.push((walker.clone(), problem.clone()));
             }
         }
     }
