@@ -149,6 +149,51 @@ fn stop_planning(c: &mut Criterion) {
     }
 }
 
+/// A start from standing against a steady step: the update in which the start is asked
+/// (its boundary chosen, the first step's footfall and keys planned, the launch built, the
+/// stance key lowered for the flat feet) and the update that crosses the first step's
+/// toe-off (its swing planned, its double support kept at the fixed rule).
+fn start_planning(c: &mut Criterion) {
+    let mut params = presets::params("start_stop").unwrap().unwrap();
+    params.schedule.truncate(0);
+    params.schedule.push(gaitlab::model::schedule::PaceEntry {
+        trigger: gaitlab::model::schedule::PaceTrigger::TimeS(1e6),
+        action: gaitlab::model::schedule::PaceAction::Start,
+    });
+    let mut standing = Walker::new(&params).unwrap();
+    let step = 0.001 * standing.resolved().cycle_s;
+    standing.advance(0.2);
+    c.bench_function("start asked from standing (default speed, planning the start)", |b| {
+        b.iter_batched(
+            || standing.clone(),
+            |mut walker| {
+                walker.request_start();
+                walker
+            },
+            BatchSize::SmallInput,
+        );
+    });
+    let mut started = standing.clone();
+    started.request_start();
+    // The initiating leg is the one whose heel rises first.
+    let side = if started.leg(Side::Right).footfall.step < started.leg(Side::Left).footfall.step {
+        Side::Right
+    } else {
+        Side::Left
+    };
+    let first = short_of_toe_off(started, side, step);
+    c.bench_function("update with toe-off planning of the first step (default speed, swing planning alone)", |b| {
+        b.iter_batched(
+            || first.clone(),
+            |mut walker| {
+                walker.advance(step);
+                walker
+            },
+            BatchSize::SmallInput,
+        );
+    });
+}
+
 fn joint_table_rows(c: &mut Criterion) {
     let mut w = default_walker();
     let mut line = String::with_capacity(512);
@@ -223,5 +268,14 @@ fn report(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(&out);
 }
 
-criterion_group!(benches, frame_update, toe_off_planning, stop_planning, joint_table_rows, optimiser, report);
+criterion_group!(
+    benches,
+    frame_update,
+    toe_off_planning,
+    stop_planning,
+    start_planning,
+    joint_table_rows,
+    optimiser,
+    report
+);
 criterion_main!(benches);

@@ -105,6 +105,34 @@ fn w_stops_the_walk_and_the_status_line_follows_it_to_standing() {
 }
 
 #[test]
+fn w_while_standing_sets_off_and_the_status_line_says_starting_then_walking() {
+    let mut app = load_app(None, &[]).unwrap();
+    walk(&mut app, 2.0);
+    key(&mut app, 'w');
+    walk(&mut app, 3.0);
+    assert_eq!(app.walker.walk_state(), WalkState::Standing);
+    key(&mut app, 'w');
+    assert_eq!(app.walker.walk_state(), WalkState::Starting);
+    assert!(status_line(&app).contains("starting"), "{}", status_line(&app));
+    assert!(app.message.as_deref().unwrap_or_default().contains("starting from standing"), "{:?}", app.message);
+    // While starting, `w` and the pace keys say why they wait.
+    key(&mut app, 'w');
+    assert_eq!(app.walker.walk_state(), WalkState::Starting);
+    assert!(app.message.as_deref().unwrap_or_default().starts_with("starting:"), "{:?}", app.message);
+    walk(&mut app, 2.0);
+    assert_eq!(app.walker.walk_state(), WalkState::Walking);
+    assert!(status_line(&app).contains("walking"), "{}", status_line(&app));
+    let cycle_s = app.walker.resolved().cycle_s;
+    let speed = walk(&mut app, 3.0 * cycle_s);
+    assert!((speed / 1.3 - 1.0).abs() < 0.03, "walked {speed} m/s after setting off again");
+    // And it stops again.
+    key(&mut app, 'w');
+    walk(&mut app, 3.0);
+    assert_eq!(app.walker.walk_state(), WalkState::Standing);
+    assert_walked_cleanly();
+}
+
+#[test]
 fn a_stopped_walk_stood_still_with_its_feet_planted() {
     let mut app = load_app(None, &[]).unwrap();
     walk(&mut app, 2.0);
