@@ -161,6 +161,7 @@ impl Gait {
         let ahead = (phase.floor() as i64) > live.pelvis_cycle;
         let hip_height_curve = |curve: &LiveCurve| if ahead { curve.eval_next_cycle(p) } else { curve.eval(p) };
         let z = live.lateral.eval(p) * keep;
+        let z = plan.weight_shift(phase).map_or(z, |shift| z + shift);
         PelvisPose::new(
             DVec3::new(x, y, z),
             live.rotation.eval(p) * keep,

@@ -45,6 +45,10 @@ pub const MIDSTANCE_PACE_SHARE: f64 = 0.9;
 /// faster mid-stance asks a slower double support.
 pub const DOUBLE_SUPPORT_PACE_SHARE: f64 = 0.75;
 
+/// The weight shift onto the stance foot before the first toe-off, as a share of the walk's
+/// peak-to-peak sideways sway (0.5: the body over the stance foot as far as at mid-stance).
+pub const WEIGHT_SHIFT: f64 = 0.5;
+
 /// A start worked out for one candidate moment.
 struct StartPlan {
     initiator: Side,
@@ -146,11 +150,19 @@ impl Walker {
         let (x0, x1, x2) = (x(0.0), x(1.0), x(2.0));
         let (v1, a1) = ((-3.0 * x0 + 4.0 * x1 - x2) / (2.0 * h), (x0 - 2.0 * x1 + x2) / (h * h));
         let rest = self.pelvis_position_with_plan(&self.plan, self.phase);
-        let launch = Launch::new(ds.phase, rest.0, (ds.x, v1, a1));
-        // The standing key: the height rises from it to the stance leg's mid-stance key.
-        let standing_phase = launch.from_phase.min(ms_stance.phase - 0.1);
-        let standing =
-            PelvisKey { phase: standing_phase, x: rest.0, y: rest.1, kind: KeyKind::DoubleSupport, pace: 0.0 };
+        // The weight shift reaches half the walk's sideways sway toward the stance foot (as far
+        // as the walk leans over a foot at mid-stance) by the first toe-off, from the ask on,
+        // and gives way to the sway by the launch's end (by the stance leg's mid-stance, a
+        // fifth of a cycle after the toe-off, it moved the pelvis sideways 2.4x as abruptly as
+        // the walk ever does).
+        let stance_side = initiator.other().sign();
+        let launch = Launch::new(ds.phase, rest.0, (ds.x, v1, a1)).with_weight_shift(
+            stance_side * WEIGHT_SHIFT * r.lateral_range,
+            [self.phase, cycle_start + r.toe_off, ds.phase],
+        );
+        // The standing key, at the ask: from it the height goes to the stance leg's mid-stance
+        // key, lowered where the shifting and launching pelvis asks it.
+        let standing = PelvisKey { phase: self.phase, x: rest.0, y: rest.1, kind: KeyKind::DoubleSupport, pace: 0.0 };
         StartPlan { initiator, cycle_start, first, keys: [standing, ms_stance, ds, ms_first], launch }
     }
 
@@ -174,9 +186,10 @@ impl Walker {
             let mut lower = 0.0f64;
             for (side, until) in flat_until {
                 let ankle = self.legs[side.index()].anchor;
-                let samples = ((until - launch.from_phase) / 0.01).ceil().max(0.0) as usize;
+                let from = keys[0].phase;
+                let samples = ((until - from) / 0.01).ceil().max(0.0) as usize;
                 for n in 0..=samples {
-                    let phase = (launch.from_phase + n as f64 * 0.01).min(until);
+                    let phase = (from + n as f64 * 0.01).min(until);
                     let hip = self.pelvis_with_plan(&plan, phase).hip(side.sign());
                     let d = hip - ankle;
                     let horizontal_sq = d.x * d.x + d.z * d.z;

@@ -75,6 +75,10 @@ pub struct Launch {
     pub m1: f64,
     /// Forward acceleration at its end times the span squared (m).
     pub a1: f64,
+    /// The weight shift onto the stance foot before the first step: sideways by `z` (m),
+    /// from the first phase to the peak one (the initiating foot's toe-off), back to the
+    /// walk's own sway by the last (see [`Launch::with_weight_shift`]).
+    pub shift: (f64, [f64; 3]),
 }
 
 impl Launch {
@@ -87,7 +91,41 @@ impl Launch {
     pub fn new(end_phase: f64, x0: f64, (x1, v1, a1): (f64, f64, f64)) -> Self {
         let distance = (x1 - x0).max(0.02);
         let span = Self::span_for(distance, v1);
-        Launch { from_phase: end_phase - span, span, x0, x1: x0 + distance, m1: v1 * span, a1: a1 * span * span }
+        Launch {
+            from_phase: end_phase - span,
+            span,
+            x0,
+            x1: x0 + distance,
+            m1: v1 * span,
+            a1: a1 * span * span,
+            shift: (0.0, [end_phase; 3]),
+        }
+    }
+
+    /// The launch with a weight shift: before the first foot leaves the ground the body moves
+    /// over the other (measured initiation: the centre of mass moves toward the stance foot
+    /// during the anticipatory postural adjustment, pushed there by the centre of pressure
+    /// moving toward the swing foot). Sideways by `z` (m) on a smootherstep from `from` to
+    /// `peak`, back on one by `end`, added to the sway that fades in with the launch.
+    #[must_use]
+    pub fn with_weight_shift(self, z: f64, [from, peak, end]: [f64; 3]) -> Self {
+        Launch { shift: (z, [from, peak.max(from + 1e-6), end.max(peak + 1e-6)]), ..self }
+    }
+
+    /// The weight shift's sideways offset at `phase` (m).
+    #[must_use]
+    pub fn weight_shift(&self, phase: f64) -> f64 {
+        let (z, [from, peak, end]) = self.shift;
+        // Smootherstep: no step in acceleration where the shift starts, turns or ends.
+        let smooth = |s: f64| {
+            let s = s.clamp(0.0, 1.0);
+            s * s * s * (10.0 + s * (6.0 * s - 15.0))
+        };
+        if phase <= peak {
+            z * smooth((phase - from) / (peak - from))
+        } else {
+            z * (1.0 - smooth((phase - peak) / (end - peak)))
+        }
     }
 
     /// The span (cycles) of a launch over `distance` (m) ending at speed `v1` (m per cycle).
@@ -237,6 +275,12 @@ impl PelvisPlan {
         self.keys.extend(keys.iter().copied());
         self.settle = None;
         self.launch = Some(launch);
+    }
+
+    /// The start's weight shift at `phase` (m sideways), if a start was made.
+    #[must_use]
+    pub fn weight_shift(&self, phase: f64) -> Option<f64> {
+        self.launch.as_ref().map(|l| l.weight_shift(phase))
     }
 
     /// How much of the walk's sway, rotations and arm swing is in force at `phase`: 0
