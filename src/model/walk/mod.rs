@@ -256,6 +256,7 @@ impl Walker {
         if (target - 0.5).floor() > (self.phase - 0.5).floor() {
             self.gait.live.wrap(Side::Left);
         }
+        self.reguard_after_pace_change(target);
         self.phase = target;
         self.plan.forget_before(target - 1.0);
         self.evaluate_now();

@@ -248,7 +248,11 @@ impl Walker {
         // take the change at the wrap, which pins the new cycle's start to the old one's end;
         // asked at the new cycle's start they would bend the old cycle's last segment, whose
         // end is that very instant, and jump.
-        if self.set_params_at(&params, at - 1e-9).unwrap_or(false) && old_cycle != self.gait.r.cycle_s {
+        let applied = self.set_params_at(&params, at - 1e-9).unwrap_or(false);
+        if applied {
+            self.pace.reguard_landing = Some(at);
+        }
+        if applied && old_cycle != self.gait.r.cycle_s {
             self.pace.rate_from = Some((at, old_cycle, old_slope));
         }
     }

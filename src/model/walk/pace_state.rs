@@ -140,6 +140,9 @@ pub(crate) struct Pace {
     pub(crate) rate_from: Option<(f64, f64, f64)>,
     pub(crate) stop: StopStage,
     pub(crate) start: StartStage,
+    /// A pace change's heel strike (master phase) whose landed leg is to be guarded again
+    /// once the cycle curves it will stand under are playing.
+    pub(crate) reguard_landing: Option<f64>,
     pub(crate) start_x: f64,
     pub(crate) events: Vec<PaceEvent>,
 }
@@ -155,6 +158,7 @@ impl Pace {
             rate_from: None,
             stop: if standing { StopStage::Standing { final_step: -1 } } else { StopStage::None },
             start: StartStage::None,
+            reguard_landing: None,
             start_x,
             events: Vec::new(),
         }

@@ -150,6 +150,21 @@ impl Walker {
         self.guard_landing_reach(side, to, strike_angle, strike_phase, &plan, playing_at);
     }
 
+    /// After a pace change at a heel strike, once the cycle curves are playing that the leg
+    /// which has just landed will stand under: its loading response and mid-stance are
+    /// guarded again, as its step was planned at the old speed. The new speed's sway,
+    /// rotation and obliquity move its hip by millimetres, and the walk keeps only 0.1 % of
+    /// reach in hand: a slowdown from 2.0 to 0.5 m/s left that leg out of reach at the end of
+    /// its mid-stance (1-2 mm of slide). Only keys not yet playing at `playing_at` move.
+    pub(super) fn reguard_after_pace_change(&mut self, playing_at: f64) {
+        let Some(strike) = self.pace.reguard_landing.take() else { return };
+        let landed =
+            self.legs.iter().find(|l| l.phase == LegPhase::LoadingResponse && (l.cycle_start - strike).abs() < 1e-9);
+        if let Some(side) = landed.map(|l| l.side) {
+            self.guard_stance_reach(side, strike, None, playing_at);
+        }
+    }
+
     /// The pelvis at each of `phases`, for [`Self::rekeyed_hip`].
     fn pelvis_poses(&self, phases: &[f64]) -> Vec<PelvisPose> {
         phases.iter().map(|&phase| self.pelvis_at(phase)).collect()
@@ -160,8 +175,19 @@ impl Walker {
     /// rotations, so only the path is evaluated again: the same numbers as a whole
     /// [`Walker::pelvis_at`], without its four angle curves and three rotations on each of
     /// the guard's up to six passes.
+    ///
+    /// Past the last key (a fast walk's mid-stance key comes before the heel rises, and the
+    /// segment after it is planned only at the other leg's toe-off) the pelvis goes on at the
+    /// pace it passes that key with instead of stopping there: stopped, it hid up to 1.4 cm
+    /// of forward travel over a flat foot from the guard.
     fn rekeyed_hip(&self, pose: &PelvisPose, phase: f64, side_sign: f64) -> DVec3 {
-        let (x, y) = self.pelvis_position_with_plan(&self.plan, phase);
+        let (x, y) = match self.plan.last() {
+            Some(last) if phase > last.phase && self.plan.settling().is_none() => {
+                let (x, y) = self.pelvis_position_with_plan(&self.plan, last.phase);
+                (x + last.pace * self.gait.traj.forward(last.kind).slope(0.0) * (phase - last.phase), y)
+            }
+            _ => self.pelvis_position_with_plan(&self.plan, phase),
+        };
         PelvisPose { position: DVec3::new(x, y, pose.position.z), ..*pose }.hip(side_sign)
     }
 
