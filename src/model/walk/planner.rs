@@ -188,7 +188,16 @@ impl Walker {
         let ms_after = self.midstance_key(leading, strike_phase);
         let ds = self.double_support_key(trailing, leading, strike_phase, &ms_before, &ms_after);
         self.plan.push(ds);
-        self.plan.push(PelvisKey { pace: ds.pace, ..ms_after });
+        // During a speed change the mid-stance key is passed halfway to the coming ramp step's
+        // pace, so that the speed-up (or slow-down) spreads over the segments either side of
+        // it instead of falling into the one after it: the scheduled 0.8 -> 1.6 -> 1.0 m/s
+        // walk's largest pelvis velocity change per frame 0.111 -> 0.104 m/s (1.19x -> 1.11x
+        // the steady walks'); a quarter of the way gave 0.105, the whole way 0.104.
+        let pace = match self.coming_ramp_stride() {
+            Some(next) => 0.5 * (ds.pace + next),
+            None => ds.pace,
+        };
+        self.plan.push(PelvisKey { pace, ..ms_after });
         ms_before
     }
 
