@@ -260,10 +260,16 @@ impl Walker {
     /// The stride (m per cycle) the walk will have after the coming heel strike, when that
     /// strike takes a step of a speed change.
     pub(super) fn coming_ramp_stride(&self) -> Option<f64> {
+        self.coming_ramp().map(|r| r.stride_m)
+    }
+
+    /// The walk's derived values after the coming heel strike, when that strike takes a step
+    /// of a speed change.
+    pub(super) fn coming_ramp(&self) -> Option<crate::model::params::Resolved> {
         let (from, to, done) = self.pace.ramp?;
         let mut params = self.params.clone();
         params.walk.speed_mps = from + (to - from) * f64::from(done + 1) / f64::from(RAMP_STEPS);
-        Some(params.resolve().stride_m)
+        Some(params.resolve())
     }
 
     /// The kind of step to plan at the coming toe-off.

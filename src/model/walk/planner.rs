@@ -207,10 +207,16 @@ impl Walker {
     /// terrain, [6.3.3, fig 6.14]).
     pub(super) fn midstance_key(&self, footfall: &Footfall, strike_phase: f64) -> PelvisKey {
         let r = &self.gait.r;
+        // During a speed-up the mid-stance key takes the coming ramp step's drop when it is the
+        // larger (the drop grows with speed): planned at the slower speed's height, the first
+        // full-speed step had to reach its long double support from a pelvis 0.8 cm higher,
+        // and the reach guard lowered that key 4.3 cm (1.5 in a steady walk) — the ramp's
+        // largest pelvis acceleration.
+        let drop = self.coming_ramp().map_or(r.midstance_drop, |next| next.midstance_drop.max(r.midstance_drop));
         PelvisKey {
             phase: strike_phase + 0.5 * r.toe_off,
             x: footfall.heel.x + r.midstance_offset,
-            y: footfall.heel.y + r.dims.standing_hip_height() - r.midstance_drop,
+            y: footfall.heel.y + r.dims.standing_hip_height() - drop,
             kind: KeyKind::MidStance,
             pace: r.stride_m,
         }
