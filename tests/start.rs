@@ -311,3 +311,19 @@ fn every_preset_starts_stops_and_changes_pace_at_any_moment_without_a_slide() {
     }
     println!("{} problems", report.len());
 }
+
+/// A pelvis-forward curve edited flat at the double support (the keyed path nearly still
+/// where the launch hands over) must not make a start wait for ever or fail: the launch is
+/// capped at 1.5 cycles.
+#[test]
+fn a_start_onto_a_nearly_still_keyed_path_sets_off_within_two_cycles() {
+    let text = "[[walk.schedule]]\ntime_s = 0.3\nstart = true\n[curves.pelvis_forward_ds_ms]\npoints = [[0.0, 0.0], [0.33, 0.0], [0.66, 0.7], [1.0, 1.0]]\n";
+    let p = config::load_text(text, "t.toml", &[]).unwrap();
+    let (frames, w) = walk(&p, 6.0);
+    let c = analysis::checks(&frames);
+    assert_eq!(c.non_finite_values, 0, "{c:?}");
+    let e = w.pace_events();
+    assert_eq!(e[1].kind.name(), "first_step", "{:?}", e.iter().map(|e| e.kind.name()).collect::<Vec<_>>());
+    let cycle_s = w.resolved().cycle_s;
+    assert!(e[1].time_s - e[0].time_s < 2.0 * cycle_s, "first step {:.2} s after the ask", e[1].time_s - e[0].time_s);
+}

@@ -104,10 +104,16 @@ impl Walker {
         self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::StartAsked });
         let p = self.phase;
         let first_boundary = (2.0 * p).ceil() / 2.0;
-        let mut plan = (0..8)
-            .map(|k| self.start_plan(first_boundary + 0.5 * f64::from(k)))
-            .find(|s| s.launch.from_phase >= p && s.cycle_start + self.gait.r.heel_rise > p)
-            .expect("a later boundary always leaves room: the launch's span is fixed");
+        // The launch lasts at most `Launch::MAX_SPAN` cycles, so one of the first eight
+        // boundaries leaves it room; the last is taken whatever happens.
+        let fits = |s: &StartPlan| s.launch.from_phase >= p && s.cycle_start + self.gait.r.heel_rise > p;
+        let mut plan = self.start_plan(first_boundary);
+        for k in 1..8 {
+            if fits(&plan) {
+                break;
+            }
+            plan = self.start_plan(first_boundary + 0.5 * f64::from(k));
+        }
         let flat_until = [
             (plan.initiator, plan.cycle_start + self.gait.r.heel_rise),
             (plan.initiator.other(), plan.cycle_start + 0.5 + self.gait.r.heel_rise),

@@ -128,10 +128,16 @@ impl Launch {
         }
     }
 
+    /// Longest launch (cycles): a walk whose keyed path is nearly still at its first double
+    /// support (a pelvis-forward curve edited flat there) sets off over this instead of
+    /// waiting ever longer; shorter, the end speed times the span is under twice the
+    /// distance and the speed still never turns back.
+    pub const MAX_SPAN: f64 = 1.5;
+
     /// The span (cycles) of a launch over `distance` (m) ending at speed `v1` (m per cycle).
     #[must_use]
     pub fn span_for(distance: f64, v1: f64) -> f64 {
-        Self::SPEED_TO_DISTANCE * distance.max(0.02) / v1.max(1e-3)
+        (Self::SPEED_TO_DISTANCE * distance.max(0.02) / v1.max(1e-3)).min(Self::MAX_SPAN)
     }
 
     /// Progress through the launch at `phase`: 0 before, 1 once on the keyed path.
