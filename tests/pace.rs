@@ -275,7 +275,7 @@ fn the_config_reads_a_schedule_and_names_each_problem() {
         ),
         (
             "[[walk.schedule]]\ntime_s = 1\nspeed = 1.0\n",
-            "t.toml:3:1: walk.schedule[1].speed: unknown key (an entry takes time_s or distance_m, and speed_mps or stop)",
+            "t.toml:3:1: walk.schedule[1].speed: unknown key (an entry takes time_s or distance_m, and speed_mps, stop or start)",
         ),
         (
             "[[walk.schedule]]\ntime_s = 1\ndistance_m = 2\nstop = true\n",

@@ -327,3 +327,26 @@ fn a_start_onto_a_nearly_still_keyed_path_sets_off_within_two_cycles() {
     let cycle_s = w.resolved().cycle_s;
     assert!(e[1].time_s - e[0].time_s < 2.0 * cycle_s, "first step {:.2} s after the ask", e[1].time_s - e[0].time_s);
 }
+
+/// A speed asked while standing is the speed the walk sets off at (the schedule's
+/// stop, speed, start), and a start then walks it.
+#[test]
+fn a_speed_asked_while_standing_is_the_speed_the_walk_sets_off_at() {
+    let mut p = presets::params("default").unwrap().unwrap();
+    p.schedule = vec![
+        at_time(0.2, PaceAction::Start),
+        at_time(4.0, PaceAction::Stop),
+        at_time(6.5, PaceAction::Speed(0.8)),
+        at_time(7.0, PaceAction::Start),
+    ];
+    let (frames, w) = walk(&p, 14.0);
+    let c = analysis::checks(&frames);
+    assert!(c.foot_skate_mm < 1.0 && c.reach_failures == 0 && c.non_finite_values == 0, "{c:?}");
+    assert!((w.params().walk.speed_mps - 0.8).abs() < 1e-12);
+    let kinds: Vec<&str> = w.pace_events().iter().map(|e| e.kind.name()).collect();
+    assert!(kinds.windows(3).any(|k| k == ["speed_asked", "speed_reached", "start_asked"]), "{kinds:?}");
+    // The last three seconds walk 0.8 m/s.
+    let tail = &frames[frames.len() - 181..];
+    let v = (tail[180].pelvis.x - tail[0].pelvis.x) / (tail[180].time_s - tail[0].time_s);
+    assert!((v - 0.8).abs() < 0.05, "{v}");
+}

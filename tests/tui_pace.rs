@@ -93,11 +93,13 @@ fn w_stops_the_walk_and_the_status_line_follows_it_to_standing() {
     assert!(status_line(&app).contains("standing"), "{}", status_line(&app));
     // At rest: the pelvis does not move over a second.
     assert!(walk(&mut app, 1.0).abs() < 1e-9);
-    // Pace keys while standing say why nothing happens, and change nothing.
+    // A pace key while standing sets the speed the walk sets off at, and nothing moves.
     key(&mut app, '+');
-    assert!((app.params.walk.speed_mps - 1.3).abs() < 1e-12);
-    assert!(!app.is_modified());
-    assert!(app.message.as_deref().unwrap_or_default().contains("standing"), "{:?}", app.message);
+    assert!((app.params.walk.speed_mps - 1.4).abs() < 1e-12);
+    assert!((app.walker.params().walk.speed_mps - 1.4).abs() < 1e-12);
+    assert!(app.message.as_deref().unwrap_or_default().contains("the speed w sets off at"), "{:?}", app.message);
+    assert!(walk(&mut app, 0.5).abs() < 1e-9);
+    assert_eq!(app.walker.walk_state(), WalkState::Standing);
     // `r` walks again.
     key(&mut app, 'r');
     assert_eq!(app.walker.walk_state(), WalkState::Walking);

@@ -49,7 +49,7 @@ impl Loader {
             self.error(
                 at,
                 "walk.schedule",
-                "expected [[walk.schedule]] tables (time_s or distance_m, speed_mps or stop)",
+                "expected [[walk.schedule]] tables (time_s or distance_m; speed_mps, stop or start)",
             );
             return;
         };
@@ -62,7 +62,11 @@ impl Loader {
             let key = format!("walk.schedule[{}]", n + 1);
             let item_at = place(item.span().start);
             let DeValue::Table(table) = item.get_ref() else {
-                self.error(&item_at, &key, "expected a table: time_s or distance_m, and speed_mps or stop = true");
+                self.error(
+                    &item_at,
+                    &key,
+                    "expected a table: time_s or distance_m, and speed_mps, stop = true or start = true",
+                );
                 continue;
             };
             if let Some(entry) = self.read_entry(&key, table, &item_at, place) {
@@ -95,7 +99,7 @@ impl Loader {
                 self.error(
                     &kat,
                     &full,
-                    format!("unknown key{hint} (an entry takes time_s or distance_m, and speed_mps or stop)"),
+                    format!("unknown key{hint} (an entry takes time_s or distance_m, and speed_mps, stop or start)"),
                 );
                 sound = false;
                 continue;

@@ -40,10 +40,7 @@ impl App {
                 ));
                 return;
             }
-            WalkState::Standing => {
-                self.message = Some("standing: w sets off (the pace keys work while walking)".into());
-                return;
-            }
+            WalkState::Standing => {}
         }
         if action == Action::StopWalk {
             self.walker.request_stop();
@@ -69,6 +66,10 @@ impl App {
         self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {to:.1}") });
         self.redo.clear();
         self.walker.request_speed(to);
-        self.message = Some(format!("walk.speed_mps = {to:.1}, reached over two steps"));
+        self.message = Some(if self.walker.walk_state() == WalkState::Standing {
+            format!("walk.speed_mps = {to:.1}: the speed w sets off at")
+        } else {
+            format!("walk.speed_mps = {to:.1}, reached over two steps")
+        });
     }
 }

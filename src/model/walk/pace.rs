@@ -133,12 +133,28 @@ impl Walker {
     }
 
     /// Asks for a new speed (m/s, clamped to [`SPEED_RANGE_MPS`]), reached over the next
-    /// [`RAMP_STEPS`] steps. Ignored once a stop is asked.
+    /// [`RAMP_STEPS`] steps; standing, it is the speed the walk sets off at. Ignored while a
+    /// stop is under way.
     pub fn request_speed(&mut self, speed_mps: f64) {
-        if self.pace.stop != StopStage::None || !speed_mps.is_finite() {
+        if !speed_mps.is_finite() {
             return;
         }
         let to = speed_mps.clamp(SPEED_RANGE_MPS.0, SPEED_RANGE_MPS.1);
+        if matches!(self.pace.stop, StopStage::Standing { .. }) {
+            // Nothing moves: the speed is the walk's at once (its sway and swing are faded out
+            // while standing), and the next start plans its steps with it.
+            let mut params = self.params.clone();
+            params.walk.speed_mps = to;
+            if self.set_params(&params).unwrap_or(false) {
+                for kind in [PaceEventKind::SpeedAsked(to), PaceEventKind::SpeedReached(to)] {
+                    self.pace.events.push(PaceEvent { time_s: self.time_s, kind });
+                }
+            }
+            return;
+        }
+        if self.pace.stop != StopStage::None {
+            return;
+        }
         let from = self.params.walk.speed_mps;
         self.pace.ramp = Some((from, to, 0));
         self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::SpeedAsked(to) });

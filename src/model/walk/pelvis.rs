@@ -58,9 +58,11 @@ pub struct PelvisPlan {
 /// settle uses, would leave the latter: a joint jerk at the hand-over). Its span is chosen
 /// so the end speed times the span is twice the distance: the quintic's speed then rises
 /// without ever turning back (up to 2.5 times it does not; beyond, the pelvis would first move
-/// backward). The height follows the keys, the first of which is the standing height at
-/// `from_phase`; the sway, the rotations and the arm swing fade in by a smoothstep over the
-/// span.
+/// backward; the end acceleration's term, small beside these, is not counted). The height
+/// follows the keys, the first of which is the standing height at the moment the start was
+/// asked; the sway, the rotations and the arm swing fade in by a smoothstep over the span,
+/// and a weight shift over the stance foot comes and goes on its own ramps
+/// ([`Launch::with_weight_shift`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Launch {
     /// Master phase the pelvis starts to move at.

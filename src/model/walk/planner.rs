@@ -210,8 +210,9 @@ impl Walker {
         // During a speed-up the mid-stance key takes the coming ramp step's drop when it is the
         // larger (the drop grows with speed): planned at the slower speed's height, the first
         // full-speed step had to reach its long double support from a pelvis 0.8 cm higher,
-        // and the reach guard lowered that key 4.3 cm (1.5 in a steady walk) — the ramp's
-        // largest pelvis acceleration.
+        // and the reach guard lowered that key further (configs/pace.toml's speed-up cycles:
+        // vertical range 6.5 -> 6.1 cm against 4.8 steady; with a lower heel-rise curve tried
+        // in session 8 the key's drop went 4.3 -> 2.9 cm, 1.5 in a steady walk).
         let drop = self.coming_ramp().map_or(r.midstance_drop, |next| next.midstance_drop.max(r.midstance_drop));
         PelvisKey {
             phase: strike_phase + 0.5 * r.toe_off,
