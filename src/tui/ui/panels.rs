@@ -196,12 +196,21 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
             TableLine::Record(r) => r,
         };
         let style = if r.fallback { Style::new().fg(Color::LightRed) } else { Style::new() };
+        // A step whose double support is not chosen nor costed (a start's first step, whose
+        // pelvis launches onto the fixed rule's key, and a stop's closing step) is no
+        // unreachable one: it says so.
+        let uncosted = r.method.is_none() && r.evaluations == 0 && r.chosen.cost.is_none();
+        let (chosen_cost, fixed_cost) = if uncosted {
+            ("fixed".to_string(), "-".to_string())
+        } else {
+            (cost(r.chosen.cost), cost(r.fixed_rule.cost))
+        };
         let cells = [
             r.step.to_string(),
             r.side.suffix().to_string(),
             format!("{:.3}", r.chosen_ratio()),
-            cost(r.chosen.cost),
-            cost(r.fixed_rule.cost),
+            chosen_cost,
+            fixed_cost,
             format!("{}/{}", r.feasible, r.evaluations),
             if app.show_timings { format!("{:.0}", r.elapsed_us) } else { "-".into() },
         ];
