@@ -1,6 +1,7 @@
 //! The lab's pace keys (issue 14, point 4): `+` / `-` change the walking speed by 0.1 m/s over
-//! the next two steps, as an undoable edit of `walk.speed_mps`; `w` stops the walk; the status
-//! line says whether the walk is walking, stopping or standing.
+//! the next two steps, as an undoable edit of `walk.speed_mps`; `w` stops the walk and,
+//! standing, sets off; the status line says whether the walk is standing, starting, walking or
+//! stopping.
 
 use gaitlab::model::walk::pace::WalkState;
 use gaitlab::tui::app::App;
@@ -140,5 +141,23 @@ fn a_stopped_walk_stood_still_with_its_feet_planted() {
     walk(&mut app, 2.0);
     key(&mut app, 'w');
     walk(&mut app, 4.0);
+    assert_walked_cleanly();
+}
+
+#[test]
+fn the_optimiser_table_marks_the_starts_first_step_and_the_closing_step_as_fixed() {
+    let config = std::path::Path::new("configs").join("start_stop.toml");
+    let mut app = load_app(Some(&config), &[]).unwrap();
+    walk(&mut app, 8.0);
+    let mut terminal = Terminal::new(TestBackend::new(160, 45)).unwrap();
+    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer().clone();
+    let screen: Vec<String> =
+        (0..45).map(|y| (0..160).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>()).collect();
+    let rows: Vec<&String> = screen.iter().filter(|l| l.contains(" 0.500 ")).collect();
+    let uncosted: Vec<&&String> = rows.iter().filter(|l| l.contains("fixed   -")).collect();
+    // The closing step of the stop at 6 s, and the start's first step (if still in view).
+    assert!(!uncosted.is_empty(), "{}", screen.join("\n"));
+    assert!(rows.iter().all(|l| !l.contains("unreach")), "{}", screen.join("\n"));
     assert_walked_cleanly();
 }
