@@ -92,6 +92,13 @@ fn w_stops_the_walk_and_the_status_line_follows_it_to_standing() {
     walk(&mut app, 3.0);
     assert_eq!(app.walker.walk_state(), WalkState::Standing);
     assert!(status_line(&app).contains("standing"), "{}", status_line(&app));
+    // The walk panel says both legs stand (no phase fraction cycling under a body at rest).
+    let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer().clone();
+    let screen: String =
+        (0..30).map(|y| (0..100).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>() + "\n").collect();
+    assert!(screen.contains("R standing  L standing"), "{screen}");
     // At rest: the pelvis does not move over a second.
     assert!(walk(&mut app, 1.0).abs() < 1e-9);
     // A pace key while standing sets the speed the walk sets off at, and nothing moves.

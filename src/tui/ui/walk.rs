@@ -24,9 +24,13 @@ pub fn draw(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let [canvas_area, info_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(3)]).areas(inner);
     draw_canvas(f, canvas_area, app, marker);
     let fr = &app.frame;
+    // Standing legs hold their midstance for good: the walk's clock runs on, but a phase
+    // fraction cycling under a body at rest would say they were walking.
+    let standing = app.walker.walk_state() == crate::model::walk::pace::WalkState::Standing;
     let leg = |s: Side| {
         let l = &fr.legs[s.index()];
-        format!("{} {} {:.2}", if s == Side::Right { "R" } else { "L" }, l.leg_phase.name(), l.phase)
+        let name = if s == Side::Right { "R" } else { "L" };
+        if standing { format!("{name} standing") } else { format!("{name} {} {:.2}", l.leg_phase.name(), l.phase) }
     };
     let info = vec![
         Line::from(vec![
