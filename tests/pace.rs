@@ -3,6 +3,7 @@
 //! speed schedule reaches each plateau within two steps; the config reads a schedule.
 
 mod common;
+mod pace_common;
 
 use common::{max_speed_changes, max_steps};
 use gaitlab::analysis;
@@ -13,47 +14,10 @@ use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::frame::Frame;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::model::walk::pace::WalkState;
+use pace_common::{at_time, heel_strikes, max_pelvis_velocity_jump, walk};
 
 fn preset(name: &str) -> WalkParams {
     presets::params(name).unwrap().unwrap()
-}
-
-fn at_time(t: f64, action: PaceAction) -> PaceEntry {
-    PaceEntry { trigger: PaceTrigger::TimeS(t), action }
-}
-
-/// Walks `params` for `seconds` at `fps`, returning the frames and the walker.
-fn walk(params: &WalkParams, seconds: f64, fps: f64) -> (Vec<Frame>, Walker) {
-    let mut w = Walker::new(params).unwrap();
-    let n = (seconds * fps).round() as u64;
-    let mut frames = vec![w.frame(0)];
-    for i in 1..=n {
-        w.advance(1.0 / fps);
-        frames.push(w.frame(i));
-    }
-    (frames, w)
-}
-
-/// The largest frame-to-frame change of the pelvis's velocity (m/s per frame, all three axes).
-fn max_pelvis_velocity_jump(frames: &[Frame], fps: f64) -> f64 {
-    frames
-        .windows(3)
-        .map(|w| ((w[2].pelvis - w[1].pelvis) - (w[1].pelvis - w[0].pelvis)).length() * fps)
-        .fold(0.0, f64::max)
-}
-
-/// Heel strikes (frames where a leg goes from swing to loading response).
-fn heel_strikes(frames: &[Frame]) -> Vec<&Frame> {
-    frames
-        .windows(2)
-        .filter(|w| {
-            w[1].legs
-                .iter()
-                .zip(&w[0].legs)
-                .any(|(b, a)| b.leg_phase == LegPhase::LoadingResponse && a.leg_phase == LegPhase::Swing)
-        })
-        .map(|w| &w[1])
-        .collect()
 }
 
 const FPS: f64 = 60.0;

@@ -25,11 +25,16 @@ fn assert_walked_cleanly() {
     assert_eq!((checks.reach_failures, checks.non_finite_values), (0, 0), "{checks:?}");
 }
 
-fn status_line(app: &App) -> String {
-    let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
+/// The lab drawn at `width` x `height`, a line a row.
+fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
+    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer().clone();
-    (0..100).map(|x| buffer[(x, 29)].symbol().to_string()).collect()
+    let buffer = terminal.backend().buffer();
+    (0..height).map(|y| (0..width).map(|x| buffer[(x, y)].symbol().to_string()).collect()).collect()
+}
+
+fn status_line(app: &App) -> String {
+    screen(app, 100, 30).pop().unwrap()
 }
 
 fn key(app: &mut App, c: char) {
@@ -93,12 +98,8 @@ fn w_stops_the_walk_and_the_status_line_follows_it_to_standing() {
     assert_eq!(app.walker.walk_state(), WalkState::Standing);
     assert!(status_line(&app).contains("standing"), "{}", status_line(&app));
     // The walk panel says both legs stand (no phase fraction cycling under a body at rest).
-    let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
-    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer().clone();
-    let screen: String =
-        (0..30).map(|y| (0..100).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>() + "\n").collect();
-    assert!(screen.contains("R standing  L standing"), "{screen}");
+    let walk_panel = screen(&app, 100, 30).join("\n");
+    assert!(walk_panel.contains("R standing  L standing"), "{walk_panel}");
     // At rest: the pelvis does not move over a second.
     assert!(walk(&mut app, 1.0).abs() < 1e-9);
     // A pace key while standing sets the speed the walk sets off at, and nothing moves.
@@ -156,11 +157,7 @@ fn the_optimiser_table_marks_the_starts_first_step_and_the_closing_step_as_fixed
     let config = std::path::Path::new("configs").join("start_stop.toml");
     let mut app = load_app(Some(&config), &[]).unwrap();
     walk(&mut app, 8.0);
-    let mut terminal = Terminal::new(TestBackend::new(160, 45)).unwrap();
-    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer().clone();
-    let screen: Vec<String> =
-        (0..45).map(|y| (0..160).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>()).collect();
+    let screen = screen(&app, 160, 45);
     let rows: Vec<&String> = screen.iter().filter(|l| l.contains(" 0.500 ")).collect();
     let uncosted: Vec<&&String> = rows.iter().filter(|l| l.contains("fixed   -")).collect();
     // The closing step of the stop at 6 s, and the start's first step (if still in view).

@@ -168,16 +168,45 @@ pub fn steady_throughout(parts: &[Part]) -> bool {
         && parts.iter().all(|p| matches!(p.kind, PartKind::StartUp | PartKind::Plateau))
 }
 
+/// The speed asked of a walk as its pace events go by: the config's (none while a walk that
+/// begins standing waits for its start), each new ask's, none from a stop on, and the last
+/// asked again from a start. One rule for the steady parts and the speed plot.
+pub(crate) struct AskedSpeed {
+    /// Asked now (m/s).
+    pub(crate) now: f64,
+    /// What a start sets off at: the last speed asked of the walk.
+    walk: f64,
+}
+
+impl AskedSpeed {
+    /// Before the first event of `run`.
+    pub(crate) fn new(run: &Run) -> Self {
+        let walk = run.start_speed_mps;
+        AskedSpeed { now: if run.states.first() == Some(&WalkState::Standing) { 0.0 } else { walk }, walk }
+    }
+
+    /// Takes an event; `Some` new asked speed when it asks one.
+    pub(crate) fn take(&mut self, kind: PaceEventKind) -> Option<f64> {
+        self.now = match kind {
+            PaceEventKind::SpeedAsked(v) => {
+                self.walk = v;
+                v
+            }
+            PaceEventKind::StopAsked => 0.0,
+            PaceEventKind::StartAsked => self.walk,
+            _ => return None,
+        };
+        Some(self.now)
+    }
+}
+
 /// Each frame's label and asked speed. A pace event is stamped with the time of the frame
 /// the walker advanced from: it shows from the next frame on.
 fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f64)> {
     let frames = &run.frames;
     let start_up_end = right.first().copied().unwrap_or(frames.len());
     let mut events = run.pace_events.iter().peekable();
-    // The speed a start from standing sets off at: the last asked before the stop (none is
-    // asked of a walk that begins standing until its start).
-    let mut walk_speed = run.start_speed_mps;
-    let mut asked = if run.states.first() == Some(&WalkState::Standing) { 0.0 } else { walk_speed };
+    let mut asked = AskedSpeed::new(run);
     // A start from standing's start-up runs to this frame (exclusive).
     let mut started_until = 0;
     // A speed change runs to this frame (exclusive); `usize::MAX` until its speed is reached.
@@ -187,18 +216,18 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     let blend_steps = ((2.0 * CADENCE_BLEND_CYCLES).ceil() as usize).max(1);
     for (i, f) in frames.iter().enumerate() {
         while let Some(e) = events.next_if(|e| e.time_s < f.time_s - 1e-9) {
+            asked.take(e.kind);
             match e.kind {
-                PaceEventKind::SpeedAsked(v) => (asked, walk_speed, change_until) = (v, v, usize::MAX),
+                PaceEventKind::SpeedAsked(_) => change_until = usize::MAX,
                 // The reaching heel strike is frame `i`; steady from the heel strike that
                 // ends the cadence blend it started.
                 PaceEventKind::SpeedReached(_) => {
                     change_until =
                         steps.iter().copied().filter(|&s| s > i).nth(blend_steps - 1).unwrap_or(frames.len());
                 }
-                PaceEventKind::StopAsked => asked = 0.0,
                 PaceEventKind::Braking => stop_stage = Some(PartKind::Braking),
                 PaceEventKind::Closing => stop_stage = Some(PartKind::Closing),
-                PaceEventKind::StartAsked => (asked, stop_stage) = (walk_speed, None),
+                PaceEventKind::StartAsked => stop_stage = None,
                 // The pelvis is on the walk's path from frame `i`; the second step lands at the
                 // next heel strike, and the walk is steady from the one after.
                 PaceEventKind::Walking => {
@@ -215,7 +244,7 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
             _ if i < start_up_end || i < started_until => PartKind::StartUp,
             _ => PartKind::Plateau,
         };
-        labels.push((kind, asked));
+        labels.push((kind, asked.now));
     }
     labels
 }

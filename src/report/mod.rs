@@ -137,7 +137,7 @@ pub fn write_report(
         walks.extend(others.iter().map(|(name, _, run, _)| plots::Walk { name: name.clone(), run }));
         plots::write_plots(&plots, &walks)?;
         plots::write_ik_plot(&plots, ik_targets, &ik_runs)?;
-        pace::write_speed_plot(&plots, &input.name, &run, input.params.walk.speed_mps, steady.as_ref())?;
+        pace::write_speed_plot(&plots, &input.name, &run, steady.as_ref())?;
         progress("writing summary");
         let json = serde_json::to_string_pretty(&against::SummaryJson::new(&summary, &normative))
             .map_err(|e| e.to_string())?;

@@ -6,9 +6,9 @@
 use super::metrics::SteadyPlateau;
 use super::plots::{Figure, Line, Panel, write_figure};
 use crate::analysis::Run;
-use crate::analysis::steady::{self, Part, PartKind};
+use crate::analysis::steady::{self, AskedSpeed, Part, PartKind};
 use crate::model::walk::frame::Frame;
-use crate::model::walk::pace::{PaceEventKind, WalkState};
+use crate::model::walk::pace::PaceEventKind;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -37,29 +37,19 @@ fn step_mean_speed(run: &Run) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// The asked speed over time: the config's, then each `SpeedAsked`; zero from a stop on (and
-/// before a first start), the last asked again from a start.
-fn asked_speed(run: &Run, start_mps: f64) -> Vec<(f64, f64)> {
+/// The asked speed over time, as a step line (see [`AskedSpeed`]).
+fn asked_speed(run: &Run) -> Vec<(f64, f64)> {
     let end = run.frames.last().map_or(0.0, |f| f.time_s);
-    // A walk that begins standing asks for no speed until its start.
-    let mut now = if run.states.first() == Some(&WalkState::Standing) { 0.0 } else { start_mps };
-    let mut points = vec![(0.0, now)];
-    let mut walk_mps = start_mps;
+    let mut asked = AskedSpeed::new(run);
+    let mut points = vec![(0.0, asked.now)];
     for e in &run.pace_events {
-        let to = match e.kind {
-            PaceEventKind::SpeedAsked(v) => {
-                walk_mps = v;
-                v
-            }
-            PaceEventKind::StopAsked => 0.0,
-            PaceEventKind::StartAsked => walk_mps,
-            _ => continue,
-        };
-        points.push((e.time_s, now));
-        points.push((e.time_s, to));
-        now = to;
+        let before = asked.now;
+        if let Some(to) = asked.take(e.kind) {
+            points.push((e.time_s, before));
+            points.push((e.time_s, to));
+        }
     }
-    points.push((end, now));
+    points.push((end, asked.now));
     points
 }
 
@@ -76,7 +66,6 @@ pub(crate) fn write_speed_plot(
     dir: &Path,
     name: &str,
     run: &Run,
-    start_mps: f64,
     steady: Option<&SteadyPlateau>,
 ) -> Result<bool, String> {
     if run.pace_events.is_empty() {
@@ -89,12 +78,7 @@ pub(crate) fn write_speed_plot(
         y_desc: "speed (m/s)".into(),
         x: 0.0..end,
         lines: vec![
-            Line {
-                name: "asked (schedule)".into(),
-                rgb: (120, 120, 120),
-                width: 2,
-                points: asked_speed(run, start_mps),
-            },
+            Line { name: "asked (schedule)".into(), rgb: (120, 120, 120), width: 2, points: asked_speed(run) },
             Line { name: "walked".into(), rgb: (200, 30, 30), width: 3, points: step_mean_speed(run) },
         ],
         band: None,

@@ -19,7 +19,7 @@
 use crate::model::body::Side;
 use crate::model::walk::Walker;
 use crate::model::walk::gait::place_footfall;
-use crate::model::walk::leg::{Footfall, LegPhase, LegState, foot_rotation};
+use crate::model::walk::leg::{Footfall, LegPhase, LegState};
 use crate::model::walk::pace::{PaceEvent, PaceEventKind, STANDING_REACH};
 use crate::model::walk::pace_state::{StartStage, StopStage};
 use crate::model::walk::pelvis::{KeyKind, Launch, PelvisKey, PelvisPlan, Settle};
@@ -65,15 +65,13 @@ impl Walker {
         let r = &self.gait.r;
         let right = place_footfall(&self.terrain, r, 0, Side::Right, 0.0);
         let left = place_footfall(&self.terrain, r, -1, Side::Left, 0.0);
-        let dims = &r.dims;
-        let ankle_of = |f: &Footfall| f.heel - foot_rotation(f.yaw, f.ground_angle) * dims.heel_local();
-        let rest = self.rest_over(&ankle_of(&right).max(ankle_of(&left)));
+        let rest = self.rest_over(&right.flat_ankle(&r.dims).max(left.flat_ankle(&r.dims)));
         for (leg, footfall, cycle_start) in [(0, right, 0.0), (1, left, -0.5)] {
             let leg = &mut self.legs[leg];
             leg.phase = LegPhase::Midstance;
             leg.cycle_start = cycle_start;
             leg.footfall = footfall;
-            leg.anchor = ankle_of(&footfall);
+            leg.anchor = footfall.flat_ankle(&self.gait.r.dims);
             leg.strike_angle = 0.0;
             leg.swing = None;
         }
@@ -106,7 +104,7 @@ impl Walker {
         let first_boundary = (2.0 * p).ceil() / 2.0;
         // The launch lasts at most `Launch::MAX_SPAN` cycles, so one of the first eight
         // boundaries leaves it room; the last is taken whatever happens.
-        let fits = |s: &StartPlan| s.launch.from_phase >= p && s.cycle_start + self.gait.r.heel_rise > p;
+        let fits = |s: &StartPlan| s.launch.window.from_phase >= p && s.cycle_start + self.gait.r.heel_rise > p;
         let mut plan = self.start_plan(first_boundary);
         for k in 1..8 {
             if fits(&plan) {
@@ -262,16 +260,16 @@ impl Walker {
 
     /// After the first step is planned: the launch runs to its end.
     pub(super) fn first_step_planned(&mut self) {
-        let launch_end = self.plan.launching().map_or(self.phase, Launch::end_phase);
-        self.pace.start = StartStage::Launching { launch_end };
+        self.pace.start = StartStage::Launching;
         self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::FirstStep });
     }
 
-    /// After an update: the start is over once the pelvis is on the keyed path.
+    /// After an update: the start is over once the pelvis is on the keyed path; the plan
+    /// drops the spent launch, so nothing afterwards blends by it.
     pub(super) fn check_walking(&mut self) {
-        if let StartStage::Launching { launch_end } = self.pace.start
-            && self.phase >= launch_end
-        {
+        let on_keys = self.plan.launching().is_none_or(|l| self.phase >= l.window.end_phase());
+        if self.pace.start == StartStage::Launching && on_keys {
+            self.plan.end_launch();
             self.pace.start = StartStage::None;
             self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::Walking });
         }

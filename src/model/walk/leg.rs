@@ -1,6 +1,6 @@
 //! One leg through its four phases [6.3.2] and the swing plan made at toe-off.
 
-use crate::model::body::Side;
+use crate::model::body::{BodyDims, Side};
 use crate::model::curve::Curve;
 use glam::{DQuat, DVec3};
 
@@ -63,6 +63,14 @@ pub struct Footfall {
     /// Where the step would have landed on unbroken ground (x, m); stairs move the footfall
     /// to one tread, and the next step is planned from here so the error does not add up.
     pub(crate) nominal_x: f64,
+}
+
+impl Footfall {
+    /// Where the ankle is with the foot flat on this footfall.
+    #[must_use]
+    pub(crate) fn flat_ankle(&self, dims: &BodyDims) -> DVec3 {
+        self.heel - foot_rotation(self.yaw, self.ground_angle) * dims.heel_local()
+    }
 }
 
 /// The swing, planned once at toe-off: the curves the heel and foot will follow.

@@ -15,7 +15,7 @@ use crate::model::search::Candidate;
 use crate::model::walk::Walker;
 use crate::model::walk::gait::place_footfall;
 use crate::model::walk::leg::LegPose;
-use crate::model::walk::leg::{Footfall, LegPhase, LegState, foot_rotation};
+use crate::model::walk::leg::{Footfall, LegPhase, LegState};
 pub use crate::model::walk::pace_state::{PaceEvent, PaceEventKind, WalkState};
 use crate::model::walk::pace_state::{StartStage, StepKind, StopStage};
 use crate::model::walk::pelvis::PelvisKey;
@@ -273,12 +273,6 @@ impl Walker {
         }
     }
 
-    /// The stride (m per cycle) the walk will have after the coming heel strike, when that
-    /// strike takes a step of a speed change.
-    pub(super) fn coming_ramp_stride(&self) -> Option<f64> {
-        self.coming_ramp().map(|r| r.stride_m)
-    }
-
     /// The walk's derived values after the coming heel strike, when that strike takes a step
     /// of a speed change.
     pub(super) fn coming_ramp(&self) -> Option<crate::model::params::Resolved> {
@@ -344,7 +338,7 @@ impl Walker {
     /// After an update: the walk is at rest once the pelvis has settled with both feet flat.
     pub(super) fn check_standing(&mut self) {
         let StopStage::Closing { final_step } = self.pace.stop else { return };
-        let settled = self.plan.settling().is_some_and(|s| self.phase >= s.end_phase());
+        let settled = self.plan.settling().is_some_and(|s| self.phase >= s.window.end_phase());
         if settled && self.legs.iter().all(|l| l.phase == LegPhase::Midstance) {
             self.pace.stop = StopStage::Standing { final_step };
             self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::Standing });
@@ -357,18 +351,14 @@ impl Walker {
     /// step has landed and rolled flat.
     pub(super) fn begin_settle(&mut self, at: f64, braking: &Footfall) {
         let r = &self.gait.r;
-        let dims = &r.dims;
-        let ankle = braking.heel - foot_rotation(braking.yaw, braking.ground_angle) * dims.heel_local();
+        let rest = self.rest_over(&braking.flat_ankle(&r.dims));
         let h = 1e-4;
         let x0 = self.pelvis_at(at).position.x;
         let v0 = (self.pelvis_at(at + h).position.x - self.pelvis_at(at - h).position.x) / (2.0 * h);
-        let dz = 0.5 * (dims.hip_width - r.step_width_m);
-        let reach = STANDING_REACH * dims.leg_reach();
-        let y1 = ankle.y + (reach * reach - dz * dz).max(0.0).sqrt();
         // Swing of this step, the closing step's toe-off, swing and loading response.
         let closing_toe_off = (1.0 - r.toe_off) + (r.toe_off - 0.5);
         let wanted = closing_toe_off + (1.0 - r.toe_off) + r.foot_flat + 0.05;
-        let settle = Settle::new(at, x0, v0, (ankle.x, y1), wanted, closing_toe_off);
+        let settle = Settle::new(at, x0, v0, rest, wanted, closing_toe_off);
         self.plan.settle(settle);
     }
 }

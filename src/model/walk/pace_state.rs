@@ -111,10 +111,8 @@ pub(crate) enum StartStage {
         first: Footfall,
         initiator: Side,
     },
-    /// The first step is planned; the pelvis leaves its launch at `launch_end` (master phase).
-    Launching {
-        launch_end: f64,
-    },
+    /// The first step is planned; the pelvis is still on its launch (the plan's).
+    Launching,
 }
 
 /// The kind of step the planner is to plan next.

@@ -65,10 +65,9 @@ pub struct PelvisPlan {
 /// ([`Launch::with_weight_shift`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Launch {
-    /// Master phase the pelvis starts to move at.
-    pub from_phase: f64,
-    /// Phases it lasts.
-    pub span: f64,
+    /// When the pelvis moves on it: from the phase it starts to move at, to the first double
+    /// support.
+    pub window: PhaseWindow,
     /// Forward position at rest (m).
     pub x0: f64,
     /// Forward position at its end: the double-support key's (m).
@@ -94,8 +93,7 @@ impl Launch {
         let distance = (x1 - x0).max(0.02);
         let span = Self::span_for(distance, v1);
         Launch {
-            from_phase: end_phase - span,
-            span,
+            window: PhaseWindow { from_phase: end_phase - span, span },
             x0,
             x1: x0 + distance,
             m1: v1 * span,
@@ -142,28 +140,9 @@ impl Launch {
         (Self::SPEED_TO_DISTANCE * distance.max(0.02) / v1.max(1e-3)).min(Self::MAX_SPAN)
     }
 
-    /// Progress through the launch at `phase`: 0 before, 1 once on the keyed path.
-    #[must_use]
-    pub fn progress(&self, phase: f64) -> f64 {
-        ((phase - self.from_phase) / self.span).clamp(0.0, 1.0)
-    }
-
-    /// The blend weight of the walking values at `phase` (smoothstep of the progress).
-    #[must_use]
-    pub fn weight(&self, phase: f64) -> f64 {
-        let s = self.progress(phase);
-        s * s * (3.0 - 2.0 * s)
-    }
-
-    /// Master phase at which the pelvis joins the keyed path.
-    #[must_use]
-    pub fn end_phase(&self) -> f64 {
-        self.from_phase + self.span
-    }
-
     /// Forward position at `phase` (before the end).
     fn x(&self, phase: f64) -> f64 {
-        let s = self.progress(phase);
+        let s = self.window.progress(phase);
         let (s3, s4, s5) = (s * s * s, s * s * s * s, s * s * s * s * s);
         let h_distance = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
         let h_speed = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
@@ -182,10 +161,8 @@ impl Launch {
 /// over the same span, so none of them starts or stops with a jump in speed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settle {
-    /// Master phase the settling starts at.
-    pub from_phase: f64,
-    /// Phases it lasts.
-    pub span: f64,
+    /// When the pelvis settles: from the phase it leaves the keys at, to rest.
+    pub window: PhaseWindow,
     /// Forward position at the start (m).
     pub x0: f64,
     /// Forward speed at the start times the span (m): the Hermite's start tangent.
@@ -205,7 +182,8 @@ impl Settle {
     /// A body already at rest at (`x`, `y`) by `phase`: a walk that begins standing.
     #[must_use]
     pub fn at_rest(phase: f64, (x, y): (f64, f64)) -> Self {
-        Settle { from_phase: phase - 1.0, span: 1.0, x0: x, m0: 0.0, x1: x, y1: y, y_delay: 0.0 }
+        let window = PhaseWindow { from_phase: phase - 1.0, span: 1.0 };
+        Settle { window, x0: x, m0: 0.0, x1: x, y1: y, y_delay: 0.0 }
     }
 
     /// A settling from `x0`, moving at `v0` m per cycle at `from_phase`, to rest at `x1`,
@@ -215,51 +193,68 @@ impl Settle {
         let distance = (x1 - x0).max(0.02);
         let v0 = v0.max(1e-3);
         let span = wanted_span.clamp(1.5 * distance / v0, 2.5 * distance / v0);
-        Settle { from_phase, span, x0, m0: v0 * span, x1: x0 + distance, y1, y_delay: y_delay.min(0.5 * span) }
+        let window = PhaseWindow { from_phase, span };
+        Settle { window, x0, m0: v0 * span, x1: x0 + distance, y1, y_delay: y_delay.min(0.5 * span) }
     }
 
     /// The blend weight of the standing height at `phase`: a smoothstep over the span after
     /// the delay.
     #[must_use]
     pub fn height_weight(&self, phase: f64) -> f64 {
-        let from = self.from_phase + self.y_delay;
-        let s = ((phase - from) / (self.end_phase() - from)).clamp(0.0, 1.0);
-        s * s * (3.0 - 2.0 * s)
+        let from = self.window.from_phase + self.y_delay;
+        smoothstep(((phase - from) / (self.window.end_phase() - from)).clamp(0.0, 1.0))
     }
 
-    /// Progress through the settling at `phase`: 0 before, 1 once at rest.
+    /// Forward position at `phase` (after the window's start).
+    fn x(&self, phase: f64) -> f64 {
+        let s = self.window.progress(phase);
+        let h10 = s * (1.0 - s) * (1.0 - s);
+        let h01 = smoothstep(s);
+        self.x0 + h10 * self.m0 + h01 * (self.x1 - self.x0)
+    }
+}
+
+/// A stretch of master phase over which the pelvis leaves or joins its keys (a start's
+/// launch, a stop's settle), and the smoothstep weight the sway, rotations and arm swing
+/// blend by over it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhaseWindow {
+    /// Master phase it starts at.
+    pub from_phase: f64,
+    /// Phases it lasts.
+    pub span: f64,
+}
+
+impl PhaseWindow {
+    /// Progress through the window at `phase`: 0 before, 1 after.
     #[must_use]
     pub fn progress(&self, phase: f64) -> f64 {
         ((phase - self.from_phase) / self.span).clamp(0.0, 1.0)
     }
 
-    /// The blend weight of the standing values at `phase` (smoothstep of the progress).
+    /// The smoothstep of the progress at `phase`.
     #[must_use]
     pub fn weight(&self, phase: f64) -> f64 {
-        let s = self.progress(phase);
-        s * s * (3.0 - 2.0 * s)
+        smoothstep(self.progress(phase))
     }
 
-    /// Master phase at which the pelvis is at rest.
+    /// Master phase at which it ends.
     #[must_use]
     pub fn end_phase(&self) -> f64 {
         self.from_phase + self.span
     }
+}
 
-    /// Forward position at `phase` (after `from_phase`).
-    fn x(&self, phase: f64) -> f64 {
-        let s = self.progress(phase);
-        let h10 = s * (1.0 - s) * (1.0 - s);
-        let h01 = s * s * (3.0 - 2.0 * s);
-        self.x0 + h10 * self.m0 + h01 * (self.x1 - self.x0)
-    }
+/// 3s² − 2s³: from 0 to 1 over `s` in 0..1 with zero slope at both ends.
+fn smoothstep(s: f64) -> f64 {
+    s * s * (3.0 - 2.0 * s)
 }
 
 /// Keys kept behind the current phase (for the optimiser's look-back and plots).
 const KEYS_KEPT_BEHIND: usize = 4;
 
 impl PelvisPlan {
-    /// Starts the walk's end: from `settle.from_phase` on, the pelvis comes to rest.
+    /// Starts the walk's end: from `settle.window.from_phase` on, the pelvis comes to rest.
     pub fn settle(&mut self, settle: Settle) {
         self.settle = Some(settle);
     }
@@ -291,12 +286,17 @@ impl PelvisPlan {
         self.launch.as_ref().map(|l| l.weight_shift(phase))
     }
 
+    /// Drops a launch that has ended: the pelvis is on its keys.
+    pub fn end_launch(&mut self) {
+        self.launch = None;
+    }
+
     /// How much of the walk's sway, rotations and arm swing is in force at `phase`: 0
     /// standing, 1 walking, in between while setting off or settling.
     #[must_use]
     pub fn walking_weight(&self, phase: f64) -> f64 {
-        let settling = self.settle.as_ref().map_or(0.0, |s| s.weight(phase));
-        let launched = self.launch.as_ref().map_or(1.0, |l| l.weight(phase));
+        let settling = self.settle.as_ref().map_or(0.0, |s| s.window.weight(phase));
+        let launched = self.launch.as_ref().map_or(1.0, |l| l.window.weight(phase));
         (1.0 - settling) * launched
     }
 
@@ -369,11 +369,11 @@ impl PelvisPlan {
         let x = a.x + dx * forward.eval(u) + d0 * u * w * w - d1 * u * u * w;
         let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
         match (&self.settle, &self.launch) {
-            (Some(settle), _) if phase > settle.from_phase => {
+            (Some(settle), _) if phase > settle.window.from_phase => {
                 let w = settle.height_weight(phase);
                 (settle.x(phase), y + (settle.y1 - y) * w)
             }
-            (_, Some(launch)) if phase < launch.end_phase() => (launch.x(phase), y),
+            (_, Some(launch)) if phase < launch.window.end_phase() => (launch.x(phase), y),
             _ => (x, y),
         }
     }

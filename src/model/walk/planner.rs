@@ -193,8 +193,8 @@ impl Walker {
         // it instead of falling into the one after it: the scheduled 0.8 -> 1.6 -> 1.0 m/s
         // walk's largest pelvis velocity change per frame 0.111 -> 0.104 m/s (1.19x -> 1.11x
         // the steady walks'); a quarter of the way gave 0.105, the whole way 0.104.
-        let pace = match self.coming_ramp_stride() {
-            Some(next) => 0.5 * (ds.pace + next),
+        let pace = match self.coming_ramp() {
+            Some(next) => 0.5 * (ds.pace + next.stride_m),
             None => ds.pace,
         };
         self.plan.push(PelvisKey { pace, ..ms_after });
