@@ -71,6 +71,20 @@ fn a_walk_that_begins_standing_sets_off_stops_and_sets_off_again_on_flat_stairs_
             assert!(f.legs.iter().all(|l| l.leg_phase == LegPhase::Midstance), "{name}");
         }
         assert!((frames[0].legs[0].heel.x - frames[0].legs[1].heel.x).abs() < 1e-9, "{name}");
+        // Back at rest after the stop, until the second start: the pelvis still (velocity
+        // zero), both feet flat on the ground side by side.
+        let (rest_from, rest_to) = (run.pace_events[6].time_s, run.pace_events[7].time_s);
+        let rest: Vec<&Frame> = frames.iter().filter(|f| f.time_s > rest_from + 0.05 && f.time_s <= rest_to).collect();
+        assert!(rest.len() >= 30, "{name}: standing {rest_from:.2}-{rest_to:.2} s");
+        for f in &rest {
+            assert!(f.pelvis.distance(rest[0].pelvis) < 1e-12, "{name}: moved while standing at {:.2} s", f.time_s);
+            for l in &f.legs {
+                assert_eq!(l.leg_phase, LegPhase::Midstance, "{name}");
+                assert!((l.heel.y - l.ground_under_heel).abs() < 1e-3, "{name}: a heel off the ground");
+            }
+        }
+        let f = rest[0];
+        assert!((f.legs[0].heel.x - f.legs[1].heel.x).abs() < 0.01, "{name}: feet not side by side");
         // The pelvis never goes back (its velocity changes are held to the steady walk's in
         // `starting_moves_no_joint_faster_or_jerkier_than_the_steady_walk`).
         for pair in frames.windows(2) {
