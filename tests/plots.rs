@@ -284,3 +284,29 @@ fn the_stick_figures_stand_apart_each_on_its_ground_with_its_events() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The cost-per-step line breaks at steps with no cost: in start_stop.toml the start's first
+/// steps and the stop's closing step are not costed, so the optimised cost is two lines (the
+/// two walking stretches), not one drawn across the stop as if it had been walked.
+#[test]
+fn the_cost_per_step_line_breaks_where_no_step_was_costed() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-costline-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+        .args(["report", "configs/start_stop.toml", "--out", dir.to_str().unwrap()])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(dir.join("plots/optimisation.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    // The optimised cost's lines (the legend's sample is a two-point line).
+    let lines: Vec<usize> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#C82828"))
+        .map(|n| shape_points(&n).len())
+        .filter(|&points| points > 2)
+        .collect();
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -158,16 +158,19 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         .axis_desc_style((FONT, 20))
         .draw()
         .map_err(err)?;
-    chart
-        .draw_series(LineSeries::new(fixed, DESIGN.stroke_width(2)))
-        .map_err(err)?
-        .label("fixed rule")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], DESIGN.stroke_width(2)));
-    chart
-        .draw_series(LineSeries::new(chosen, RIGHT.stroke_width(3)))
-        .map_err(err)?
-        .label("optimised")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], RIGHT.stroke_width(3)));
+    // A line only joins consecutive steps: a step with no cost (a start's first step and a
+    // stop's closing step are not costed) breaks it, instead of a line drawn across the gap
+    // as if the steps between had been walked at costs in between.
+    for (points, style, name) in
+        [(fixed, DESIGN.stroke_width(2), "fixed rule"), (chosen, RIGHT.stroke_width(3), "optimised")]
+    {
+        for (i, run) in points.chunk_by(|a, b| b.0 - a.0 < 1.5).enumerate() {
+            let series = chart.draw_series(LineSeries::new(run.iter().copied(), style)).map_err(err)?;
+            if i == 0 {
+                series.label(name).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+            }
+        }
+    }
     draw_legend(&mut chart, 18, None)?;
     Ok(())
 }
