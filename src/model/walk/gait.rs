@@ -12,6 +12,7 @@ use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::softened_distance;
 use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
+use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use crate::model::walk::pose::solve_leg;
@@ -346,46 +347,6 @@ pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved, hip: DVe
     LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
 }
 
-/// The foot pitch (rad, toe up +) that gives an ankle dorsiflexion of `dorsi` (rad) on a leg
-/// from `hip` whose heel is at `heel`. The swing's ankle curve is the ankle's own angle, as
-/// the thesis draws it (fig 6.8) and the clinic measures it: a foot pitched against the
-/// horizontal instead flaps with the knee — it showed 20° dorsiflexion in mid-swing where
-/// people hold 0–5°. The ankle moves with the pitch (the heel is what is placed), so the
-/// pitch solves p = shank(ankle(p)) + dorsi: by secant steps, as the plain fixed-point
-/// iteration crawls where the leg is nearly straight (three passes left 0.1–0.6° with the
-/// knee bent and up to 7° near full reach; the test below holds the error).
-#[must_use]
-pub fn foot_pitch_for_ankle(hip: DVec3, heel: DVec3, yaw: f64, dorsi: f64, r: &Resolved) -> f64 {
-    // `foot_rotation(yaw, pitch) * heel_local` written out as two plane rotations: the
-    // residual runs up to seven times for each of the hundreds of swing targets a step
-    // plans, and building two quaternions per call was a third of the planning's
-    // instructions (two half-angle sincos where one sincos of the pitch does).
-    let heel_local = r.dims.heel_local();
-    let (sin_yaw, cos_yaw) = yaw.sin_cos();
-    let residual = |pitch: f64| {
-        let (sin_pitch, cos_pitch) = pitch.sin_cos();
-        let pitched_x = heel_local.x * cos_pitch - heel_local.y * sin_pitch;
-        let pitched_y = heel_local.x * sin_pitch + heel_local.y * cos_pitch;
-        let offset = DVec3::new(
-            pitched_x * cos_yaw + heel_local.z * sin_yaw,
-            pitched_y,
-            heel_local.z * cos_yaw - pitched_x * sin_yaw,
-        );
-        shank_angle(hip, heel - offset, r.dims.thigh, r.dims.shank) + dorsi - pitch
-    };
-    let (mut p0, mut g0) = (dorsi, residual(dorsi));
-    let mut p1 = p0 + g0;
-    for _ in 0..6 {
-        let g1 = residual(p1);
-        if g1.abs() < 1e-9 || (g1 - g0).abs() < 1e-15 {
-            break;
-        }
-        let next = p1 - g1 * (p1 - p0) / (g1 - g0);
-        (p0, g0, p1) = (p1, g1, next);
-    }
-    p1
-}
-
 /// The shank's sagittal angle (rad, from straight down, its lower end forward +) of a
 /// two-bone leg from `hip` to `ankle` with the knee forward of the hip–ankle line — the
 /// analytic IK's answer, in the walking plane. A neutral foot (ankle 0) is pitched by this.
@@ -440,34 +401,4 @@ pub fn heel_rise_to_reach(
         .into_iter()
         .filter(|beta| *beta >= from - 1e-12 && *beta <= MAX_HEEL_RISE)
         .min_by(f64::total_cmp)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::model::params::WalkParams;
-
-    #[test]
-    fn the_swing_foot_gets_the_ankle_angle_asked_for_within_a_hundredth_of_a_degree() {
-        let r = WalkParams::default().resolve();
-        let hip = DVec3::new(0.0, 0.9, 0.0);
-        let mut worst: f64 = 0.0;
-        // Heels from behind the hip at toe-off to ahead of it at heel strike, low and high,
-        // ankle angles from push-off plantarflexion to landing dorsiflexion.
-        for heel_x in [-0.45, -0.25, 0.0, 0.2, 0.3] {
-            for heel_y in [0.01, 0.1, 0.25] {
-                for dorsi_deg in [-20.0_f64, -5.0, 0.0, 5.0] {
-                    let heel = DVec3::new(heel_x, heel_y, 0.0);
-                    let pitch = foot_pitch_for_ankle(hip, heel, 0.0, dorsi_deg.to_radians(), &r);
-                    let ankle = heel - foot_rotation(0.0, pitch) * r.dims.heel_local();
-                    let got = pitch - shank_angle(hip, ankle, r.dims.thigh, r.dims.shank);
-                    // Where the leg cannot reach the heel, no pitch gives the angle.
-                    if hip.distance(ankle) < r.dims.leg_reach() * 0.999 {
-                        worst = worst.max((got.to_degrees() - dorsi_deg).abs());
-                    }
-                }
-            }
-        }
-        assert!(worst < 0.01, "worst ankle error {worst} deg");
-    }
 }

@@ -13,6 +13,7 @@
 //! changes and the stop (`pace`, its state in `pace_state`); the planner, `live` and `pace`
 //! add `impl Walker` blocks, called here as methods only, so no file imports back.
 
+mod ankle_pitch;
 pub mod frame;
 pub mod gait;
 mod initiation;

@@ -367,14 +367,27 @@ impl PelvisPlan {
         let d1 = forward.slope(1.0) * (b.pace * dp - dx);
         let w = 1.0 - u;
         let x = a.x + dx * forward.eval(u) + d0 * u * w * w - d1 * u * u * w;
-        let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
+        let y = self.height_between(&a, &b, u, phase, curves);
         match (&self.settle, &self.launch) {
-            (Some(settle), _) if phase > settle.window.from_phase => {
-                let w = settle.height_weight(phase);
-                (settle.x(phase), y + (settle.y1 - y) * w)
-            }
+            (Some(settle), _) if phase > settle.window.from_phase => (settle.x(phase), y),
             (_, Some(launch)) if phase < launch.window.end_phase() => (launch.x(phase), y),
             _ => (x, y),
+        }
+    }
+
+    /// The height of [`Self::position`] alone, the same number: the reach guard lowers keys
+    /// and asks again on each of its passes, and lowering moves no pelvis forward or back.
+    #[must_use]
+    pub fn height(&self, phase: f64, curves: &TrajectoryCurves) -> f64 {
+        let (a, b, u) = self.bracket(phase);
+        self.height_between(&a, &b, u, phase, curves)
+    }
+
+    fn height_between(&self, a: &PelvisKey, b: &PelvisKey, u: f64, phase: f64, curves: &TrajectoryCurves) -> f64 {
+        let y = a.y + (b.y - a.y) * curves.vertical.eval(u);
+        match &self.settle {
+            Some(settle) if phase > settle.window.from_phase => y + (settle.y1 - y) * settle.height_weight(phase),
+            _ => y,
         }
     }
 }

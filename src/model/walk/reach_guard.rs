@@ -6,7 +6,8 @@
 
 use crate::model::body::Side;
 use crate::model::walk::Walker;
-use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, swing_target};
+use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
+use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, swing_target};
 use crate::model::walk::leg::{Footfall, LegPhase, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
 use glam::DVec3;
@@ -52,64 +53,25 @@ impl Walker {
     ) -> f64 {
         let r = self.gait.r.clone();
         let limit = r.reach_margin * r.dims.leg_reach();
-        let footfall = self.legs[side.index()].footfall;
-        let strike_angle = self.legs[side.index()].strike_angle;
         // Only the two newest keys may move: the segment ending at any older key may be
         // playing already, and moving its key would make the pelvis jump.
         let ds_phase = self.movable_key_phase(KeyKind::DoubleSupport, playing_at);
         let ms_phase = self.movable_key_phase(KeyKind::MidStance, playing_at);
-        // From the end of the swing (when a plan is given: the knee is nearly straight there
-        // too) through loading response and midstance.
-        // Samples are densest around heel strike, where the leg is straightest.
-        let mut samples: Vec<f64> = Vec::with_capacity(24);
-        if swing.is_some() {
-            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
-        }
-        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
-        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
-        samples.extend(
-            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
-        );
-        // The other leg's heel rise up to its toe-off, which falls in the coming double
-        // support: it must reach at some heel-rise angle the walk may take (a stair's upper
-        // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
-        // tread into the next riser).
-        let trailing = self.trailing_reach(side, swing.is_some());
-        let sample_poses = self.pelvis_poses(&samples);
-        let trailing_poses = trailing.as_ref().map_or_else(Vec::new, |t| self.pelvis_poses(&t.phases));
+        let points = self.guard_points(side, strike_phase, swing.is_some(), limit);
         let mut dropped = 0.0;
         for _ in 0..6 {
-            let mut deficits: Vec<(f64, f64)> = Vec::with_capacity(samples.len() + 9);
-            if let Some(t) = &trailing {
-                deficits.extend(t.phases.iter().zip(&trailing_poses).filter_map(|(&phase, pose)| {
-                    let hip = self.rekeyed_hip(pose, phase, side.other().sign());
-                    t.deficit(hip, limit).map(|d| (phase, d))
-                }));
-            }
-            for (&phase, pose) in samples.iter().zip(&sample_poses) {
-                let hip = self.rekeyed_hip(pose, phase, side.sign());
-                let ankle = match swing {
-                    Some(plan) if phase < strike_phase => {
-                        let s = 1.0 - (strike_phase - phase) / (1.0 - r.toe_off);
-                        swing_target(plan, s, side, &r, hip).ankle
-                    }
-                    _ => {
-                        let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
-                        let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
-                        footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
-                    }
-                };
-                let d = hip - ankle;
-                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                let allowed = if horizontal < limit {
-                    ankle.y + (limit * limit - horizontal * horizontal).sqrt()
-                } else {
-                    ankle.y
-                };
-                if hip.y > allowed {
-                    deficits.push((phase, hip.y - allowed));
-                }
-            }
+            let deficits: Vec<(f64, f64)> = points
+                .iter()
+                .filter_map(|point| {
+                    let hip = self.rekeyed_hip(&point.pose, point.x, point.phase, point.side_sign);
+                    let allowed = point.allowed.unwrap_or_else(|| {
+                        let plan = swing.expect("a point with no fixed height is a swing's");
+                        let s = 1.0 - (strike_phase - point.phase) / (1.0 - r.toe_off);
+                        allowed_height(hip, swing_target(plan, s, side, &r, hip).ankle, limit)
+                    });
+                    (hip.y > allowed).then_some((point.phase, hip.y - allowed))
+                })
+                .collect();
             let Some((need, kind)) = self.key_to_lower(&deficits, ds_phase, ms_phase) else { break };
             if let Some(key) = self.plan.last_of_mut(kind) {
                 key.y -= need;
@@ -119,6 +81,52 @@ impl Walker {
             }
         }
         dropped
+    }
+
+    /// The instants the guard checks for `side` striking at `strike_phase`, the trailing
+    /// leg's first. Lowering keys moves the hips straight down, so what a pass needs again is
+    /// each hip's height: forward positions and, but for the swing's samples (whose ankle
+    /// follows the hip), the allowed heights are worked out once here.
+    fn guard_points(&self, side: Side, strike_phase: f64, with_swing: bool, limit: f64) -> Vec<GuardPoint> {
+        let r = &self.gait.r;
+        let footfall = self.legs[side.index()].footfall;
+        let strike_angle = self.legs[side.index()].strike_angle;
+        let mut points = Vec::with_capacity(28);
+        // The other leg's heel rise up to its toe-off, which falls in the coming double
+        // support: it must reach at some heel-rise angle the walk may take (a stair's upper
+        // landing can lift the pelvis past the trailing foot's reach, tearing its toe off the
+        // tread into the next riser). No lowering helps a foot too far behind: never short.
+        if let Some(t) = self.trailing_reach(side, with_swing) {
+            for &phase in &t.phases {
+                let (pose, x, side_sign) = (self.pelvis_at(phase), self.rekeyed_x(phase), side.other().sign());
+                let allowed = t.allowed(self.rekeyed_hip(&pose, x, phase, side_sign), limit);
+                let allowed = Some(if allowed.is_finite() { allowed } else { f64::INFINITY });
+                points.push(GuardPoint { phase, pose, x, side_sign, allowed });
+            }
+        }
+        // From the end of the swing (when a plan is given: the knee is nearly straight there
+        // too) through loading response and midstance. Samples are densest around heel
+        // strike, where the leg is straightest.
+        let mut samples: Vec<f64> = Vec::with_capacity(19);
+        if with_swing {
+            samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
+        }
+        samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
+        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        samples.extend(
+            (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
+        );
+        for phase in samples {
+            let (pose, x, side_sign) = (self.pelvis_at(phase), self.rekeyed_x(phase), side.sign());
+            let allowed = (!with_swing || phase >= strike_phase).then(|| {
+                let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
+                let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
+                let ankle = footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local();
+                allowed_height(self.rekeyed_hip(&pose, x, phase, side_sign), ankle, limit)
+            });
+            points.push(GuardPoint { phase, pose, x, side_sign, allowed });
+        }
+        points
     }
 
     /// The phase of the newest key of `kind` if the segment ending at it starts after
@@ -165,30 +173,35 @@ impl Walker {
         }
     }
 
-    /// The pelvis at each of `phases`, for [`Self::rekeyed_hip`].
-    fn pelvis_poses(&self, phases: &[f64]) -> Vec<PelvisPose> {
-        phases.iter().map(|&phase| self.pelvis_at(phase)).collect()
-    }
-
     /// The hip of side `side_sign` at `phase`, `pose` being the pelvis there before the
-    /// guard moved keys. Moving keys changes the pelvis's path only, not its sway or
-    /// rotations, so only the path is evaluated again: the same numbers as a whole
-    /// [`Walker::pelvis_at`], without its four angle curves and three rotations on each of
-    /// the guard's up to six passes.
+    /// guard moved keys and `x` its forward position ([`Self::rekeyed_x`]). The guard only
+    /// lowers keys, which changes the pelvis's height and nothing else, so only the height
+    /// is evaluated again: the same numbers as a whole [`Walker::pelvis_at`], without its
+    /// four angle curves, three rotations and forward curve on each of the guard's up to
+    /// six passes.
     ///
     /// Past the last key (a fast walk's mid-stance key comes before the heel rises, and the
     /// segment after it is planned only at the other leg's toe-off) the pelvis goes on at the
     /// pace it passes that key with instead of stopping there: stopped, it hid up to 1.4 cm
     /// of forward travel over a flat foot from the guard.
-    fn rekeyed_hip(&self, pose: &PelvisPose, phase: f64, side_sign: f64) -> DVec3 {
-        let (x, y) = match self.plan.last() {
-            Some(last) if phase > last.phase && self.plan.settling().is_none() => {
-                let (x, y) = self.pelvis_position_with_plan(&self.plan, last.phase);
-                (x + last.pace * self.gait.traj.forward(last.kind).slope(0.0) * (phase - last.phase), y)
-            }
-            _ => self.pelvis_position_with_plan(&self.plan, phase),
+    fn rekeyed_hip(&self, pose: &PelvisPose, x: f64, phase: f64, side_sign: f64) -> DVec3 {
+        let traj = &self.gait.traj;
+        let y = match self.plan.last() {
+            Some(last) if phase > last.phase && self.plan.settling().is_none() => self.plan.height(last.phase, traj),
+            _ => self.plan.height(phase, traj),
         };
         PelvisPose { position: DVec3::new(x, y, pose.position.z), ..*pose }.hip(side_sign)
+    }
+
+    /// The forward position [`Self::rekeyed_hip`] puts the pelvis at, which no lowering moves.
+    fn rekeyed_x(&self, phase: f64) -> f64 {
+        match self.plan.last() {
+            Some(last) if phase > last.phase && self.plan.settling().is_none() => {
+                let (x, _) = self.pelvis_position_with_plan(&self.plan, last.phase);
+                x + last.pace * self.gait.traj.forward(last.kind).slope(0.0) * (phase - last.phase)
+            }
+            _ => self.pelvis_position_with_plan(&self.plan, phase).0,
+        }
     }
 
     /// Of the movable keys (the newest double support and mid-stance: an older one may be
@@ -243,6 +256,27 @@ impl Walker {
     }
 }
 
+/// One instant the reach guard checks: a hip, and how high it may be for its leg to reach.
+struct GuardPoint {
+    phase: f64,
+    /// The pelvis there before the guard moved keys.
+    pose: PelvisPose,
+    /// Its forward position, which no lowering moves.
+    x: f64,
+    side_sign: f64,
+    /// The highest the hip may be (m); `None` for a sample of the swing, whose ankle moves
+    /// with the hip and is asked again on each pass.
+    allowed: Option<f64>,
+}
+
+/// The highest `hip` may be, at its horizontal place, for a leg reaching `limit` to reach
+/// `ankle` (the ankle's own height where it is beyond reach sideways).
+fn allowed_height(hip: DVec3, ankle: DVec3, limit: f64) -> f64 {
+    let d = hip - ankle;
+    let horizontal = (d.x * d.x + d.z * d.z).sqrt();
+    if horizontal < limit { ankle.y + (limit * limit - horizontal * horizontal).sqrt() } else { ankle.y }
+}
+
 /// Heel-rise angles the trailing foot is tried at, from flat to [`MAX_HEEL_RISE`].
 const TRAILING_ANGLES: usize = 30;
 
@@ -256,19 +290,17 @@ struct TrailingReach {
 }
 
 impl TrailingReach {
-    /// How far `hip` is above the highest point from which the leg still reaches its foot at
-    /// some heel-rise angle up to [`MAX_HEEL_RISE`] (m); `None` if it reaches, or if no
-    /// lowering would help (the foot is too far behind).
-    fn deficit(&self, hip: DVec3, limit: f64) -> Option<f64> {
-        let allowed = self
-            .ankles
+    /// The highest the hip at `hip`'s horizontal place may be for the leg to still reach its
+    /// foot at some heel-rise angle up to [`MAX_HEEL_RISE`] (m); −∞ if no lowering would help
+    /// (the foot is too far behind).
+    fn allowed(&self, hip: DVec3, limit: f64) -> f64 {
+        self.ankles
             .iter()
             .filter_map(|ankle| {
                 let d = hip - *ankle;
                 let horizontal = (d.x * d.x + d.z * d.z).sqrt();
                 (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
             })
-            .fold(f64::NEG_INFINITY, f64::max);
-        (allowed.is_finite() && hip.y > allowed).then_some(hip.y - allowed)
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 }

@@ -5,7 +5,8 @@ use crate::model::body::Side;
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
-use crate::model::walk::gait::{HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, foot_pitch_for_ankle, place_footfall};
+use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
+use crate::model::walk::gait::{HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, place_footfall};
 use crate::model::walk::leg::{LegPhase, LegPose, LegState, LegTarget, foot_rotation};
 use glam::{DQuat, DVec3};
 
