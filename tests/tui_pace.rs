@@ -165,3 +165,41 @@ fn the_optimiser_table_marks_the_starts_first_step_and_the_closing_step_as_fixed
     assert!(rows.iter().all(|l| !l.contains("unreach")), "{}", screen.join("\n"));
     assert_walked_cleanly();
 }
+
+#[test]
+fn the_status_line_keeps_the_pace_message_whole_at_80_columns_and_cuts_it_only_when_nothing_else_can_go() {
+    // A config deep in folders, as users keep them: at 80 columns its path and the rest of
+    // the line used to leave the message 16 characters.
+    let dir = std::env::temp_dir()
+        .join(format!("gaitlab-status-{}", std::process::id()))
+        .join("projects/walk-studies/2026/treadmill-sessions");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("start_stop.toml");
+    std::fs::copy("configs/start_stop.toml", &path).unwrap();
+    let mut app = load_app(Some(&path), &[]).unwrap();
+    walk(&mut app, 2.0);
+    let at = |app: &App, width: u16| screen(app, width, 24).pop().unwrap();
+    // Wide: every part, the whole path included.
+    assert!(at(&app, 160).contains(&path.display().to_string()), "{}", at(&app, 160));
+    key(&mut app, '+');
+    let message = "walk.speed_mps = 1.4, reached over two steps";
+    let line = at(&app, 80);
+    assert!(line.contains(message) && line.contains("walking") && line.contains("modified (1)"), "{line}");
+    // The folders go before the message does, then (at 80 columns, until the next key clears
+    // the message) the file's name; with 20 columns more the name is back.
+    assert!(!line.contains("treadmill-sessions"), "{line}");
+    let line = at(&app, 100);
+    assert!(line.contains(" start_stop.toml ") && line.contains(message) && !line.contains("2026"), "{line}");
+    // 60 columns hold the saved state, the walk's state and the message's start only.
+    let line = at(&app, 60);
+    assert!(line.contains("modified (1)  walking walk.speed_mps = 1.4, re") && line.ends_with('…'), "{line}");
+    key(&mut app, 'w');
+    let line = at(&app, 80);
+    assert!(line.contains("stopping: a braking step, then the feet side by side"), "{line}");
+    // Too narrow for the whole message even alone: cut with an ellipsis, the state kept.
+    let line = at(&app, 60);
+    assert!(line.contains("stopping stopping: a braking step") && line.ends_with('…'), "{line}");
+    walk(&mut app, 4.0);
+    assert_walked_cleanly();
+    std::fs::remove_dir_all(std::env::temp_dir().join(format!("gaitlab-status-{}", std::process::id()))).ok();
+}

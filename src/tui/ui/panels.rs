@@ -264,8 +264,16 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
     f.render_widget(chart, chart_area);
 }
 
-/// One line: file and saved state, speed, frame rate, terrain, the last message.
+/// One line: file and saved state, speed, frame rate, terrain, the walk's state, the last
+/// message. The message is what the user just asked about, so where the line is too narrow
+/// the other parts give way first — the frame rate, the terrain, the speed, then the file's
+/// folders (its name stays) — and only then is the message cut, with an ellipsis.
 pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
+    f.render_widget(Paragraph::new(status_line(app, usize::from(area.width))), area);
+}
+
+/// The status line for a terminal `width` columns wide (see [`draw_status`]).
+pub(crate) fn status_line(app: &App, width: usize) -> Line<'static> {
     let saved = if app.is_modified() {
         Span::styled(
             format!(" modified ({}) ", app.unsaved_keys().len()),
@@ -278,26 +286,56 @@ pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     // A paused lab draws only on keys: its frame rate says nothing.
     let fps =
         if app.paused { String::new() } else { app.measured_fps.map_or(String::new(), |f| format!(" {f:.0} fps")) };
-    let mut spans = vec![
-        Span::styled(format!(" {} ", app.file_label()), Style::new().bold()),
-        saved,
-        Span::raw(format!(" {run}{fps} ")),
-        Span::styled(
-            format!("{} ", app.value_text(crate::config::schema::spec("terrain.kind").expect("a key"))),
-            Style::new().fg(Color::Green),
-        ),
-        Span::styled(format!("{} ", app.walker.walk_state().name()), Style::new().fg(Color::Cyan)),
-    ];
-    match &app.message {
-        Some(m) => spans.push(Span::styled(m.clone(), Style::new().fg(Color::Yellow))),
+    let terrain = format!("{} ", app.value_text(crate::config::schema::spec("terrain.kind").expect("a key")));
+    let state = Span::styled(format!("{} ", app.walker.walk_state().name()), Style::new().fg(Color::Cyan));
+    let tail = match &app.message {
+        Some(m) => Span::styled(m.clone(), Style::new().fg(Color::Yellow)),
         None => {
             // The hint follows the bindings (`[keys]` may move help and quit elsewhere).
             let first = |action| app.keymap.keys_of(action).split(' ').next().unwrap_or_default().to_string();
             let hint = format!("{} help  {} quit", first(Action::Help), first(Action::Quit));
-            spans.push(Span::styled(hint, Style::new().fg(Color::DarkGray)));
+            Span::styled(hint, Style::new().fg(Color::DarkGray))
         }
+    };
+    let full_label = app.file_label();
+    let short_label = app.path.as_ref().and_then(|p| p.file_name()).map(|n| n.to_string_lossy().into_owned());
+    let file = |label: &str| Span::styled(format!(" {label} "), Style::new().bold());
+    let green = Style::new().fg(Color::Green);
+    // From the fullest line to the barest: the first that leaves the message whole.
+    let mut candidates = vec![
+        vec![
+            file(&full_label),
+            saved.clone(),
+            Span::raw(format!(" {run}{fps} ")),
+            Span::styled(terrain.clone(), green),
+        ],
+        vec![file(&full_label), saved.clone(), Span::raw(format!(" {run} ")), Span::styled(terrain, green)],
+        vec![file(&full_label), saved.clone(), Span::raw(format!(" {run} "))],
+        vec![file(&full_label), saved.clone(), Span::raw(" ")],
+    ];
+    if let Some(name) = &short_label {
+        candidates.push(vec![file(name), saved.clone(), Span::raw(" ")]);
     }
-    f.render_widget(Paragraph::new(Line::from(spans)), area);
+    candidates.push(vec![saved, Span::raw(" ")]);
+    let tail_width = tail.width();
+    let barest = candidates.len() - 1;
+    let mut spans = candidates
+        .into_iter()
+        .enumerate()
+        .find(|(i, head)| {
+            *i == barest || head.iter().map(Span::width).sum::<usize>() + state.width() + tail_width <= width
+        })
+        .map(|(_, head)| head)
+        .expect("the barest line is always taken");
+    spans.push(state);
+    let room = width.saturating_sub(spans.iter().map(Span::width).sum::<usize>());
+    if tail_width > room && room > 0 {
+        let cut: String = tail.content.chars().take(room - 1).collect();
+        spans.push(Span::styled(format!("{cut}…"), tail.style));
+    } else {
+        spans.push(tail);
+    }
+    Line::from(spans)
 }
 
 /// A text field after `prefix`: the selected pre-filled text reversed, or the cursor as a
