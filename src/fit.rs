@@ -27,18 +27,26 @@ pub struct FitKey {
     pub min: f64,
     /// Greatest value.
     pub max: f64,
+    /// Decimals the fitted value is written with: its resolution in the key's unit.
+    pub decimals: usize,
     /// The key's value in force (derived keys have no value of their own until set).
     start: fn(&WalkParams, &Resolved) -> f64,
 }
 
 /// The keys fitted. Bounds are the parts of each key's valid range a walk can use.
 pub const FIT_KEYS: [FitKey; 6] = [
-    FitKey { key: "pelvis.midstance_drop_cm", min: 0.0, max: 5.0, start: |_, r| r.midstance_drop * 100.0 },
-    FitKey { key: "pelvis.vertical_range_cm", min: 0.5, max: 6.0, start: |_, r| r.vertical_range * 100.0 },
-    FitKey { key: "pelvis.midstance_offset_cm", min: 5.0, max: 25.0, start: |_, r| r.midstance_offset * 100.0 },
-    FitKey { key: "legs.foot_flat", min: 0.03, max: 0.2, start: |_, r| r.foot_flat },
-    FitKey { key: "legs.heel_rise", min: 0.22, max: 0.45, start: |_, r| r.heel_rise },
-    FitKey { key: "legs.knee_lift_cm", min: 0.0, max: 8.0, start: |_, r| r.knee_lift * 100.0 },
+    FitKey { key: "pelvis.midstance_drop_cm", min: 0.0, max: 5.0, decimals: 3, start: |_, r| r.midstance_drop * 100.0 },
+    FitKey { key: "pelvis.vertical_range_cm", min: 0.5, max: 6.0, decimals: 3, start: |_, r| r.vertical_range * 100.0 },
+    FitKey {
+        key: "pelvis.midstance_offset_cm",
+        min: 5.0,
+        max: 25.0,
+        decimals: 3,
+        start: |_, r| r.midstance_offset * 100.0,
+    },
+    FitKey { key: "legs.foot_flat", min: 0.03, max: 0.2, decimals: 4, start: |_, r| r.foot_flat },
+    FitKey { key: "legs.heel_rise", min: 0.22, max: 0.45, decimals: 4, start: |_, r| r.heel_rise },
+    FitKey { key: "legs.knee_lift_cm", min: 0.0, max: 8.0, decimals: 3, start: |_, r| r.knee_lift * 100.0 },
 ];
 
 /// How long the fit may search.
@@ -94,12 +102,31 @@ fn cost_of(path: &Path, params: &WalkParams, reference: &Reference) -> (f64, Opt
 
 /// `params` with the fitted keys at `u` (each in 0..1 of its range).
 fn with_keys(params: &WalkParams, u: &[f64]) -> WalkParams {
+    let values: Vec<f64> = FIT_KEYS.iter().zip(u).map(|(k, &x)| k.min + (k.max - k.min) * x.clamp(0.0, 1.0)).collect();
+    with_values(params, &values)
+}
+
+/// `params` with the fitted keys at `values`, in their units.
+fn with_values(params: &WalkParams, values: &[f64]) -> WalkParams {
     let mut p = params.clone();
-    for (k, &x) in FIT_KEYS.iter().zip(u) {
+    for (k, &v) in FIT_KEYS.iter().zip(values) {
         let spec = schema::spec(k.key).expect("fitted keys are config keys");
-        (spec.set)(&mut p, &Value::Real(k.min + (k.max - k.min) * x.clamp(0.0, 1.0)));
+        (spec.set)(&mut p, &Value::Real(v));
     }
     p
+}
+
+/// The fitted keys at `u`, each at its written resolution ([`FitKey::decimals`]): the
+/// nearest double to the decimal, so the config reads `17.389`, not `17.38907943774207`.
+fn written_values(u: &[f64]) -> Vec<f64> {
+    FIT_KEYS
+        .iter()
+        .zip(u)
+        .map(|(k, &x)| {
+            let v = k.min + (k.max - k.min) * x.clamp(0.0, 1.0);
+            format!("{v:.*}", k.decimals).parse::<f64>().expect("a formatted number parses")
+        })
+        .collect()
 }
 
 /// Fits `params` (the config at `path`) to `reference`.
@@ -133,17 +160,26 @@ pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: Fit
         }
         (best_u, best_cost) = (u, cost);
     }
-    let (fitted_params, cost, best) = if best_cost < start_cost {
-        (with_keys(params, &best_u), best_cost, best_u)
+    // The answer as it is written (each key at its resolution) is walked once more: the
+    // figures reported are the written config's, not the search's unrounded point's.
+    let written = written_values(&best_u);
+    let written_cost = if best_cost < start_cost {
+        evaluations.set(evaluations.get() + 1);
+        cost_of(path, &with_values(&walked, &written), reference).0
     } else {
-        (params.clone(), start_cost, u0)
+        f64::INFINITY
+    };
+    let (fitted_params, cost, fitted) = if written_cost < start_cost {
+        (with_values(params, &written), written_cost, written)
+    } else {
+        (params.clone(), start_cost, start.clone())
     };
     let mut fitted_walked = fitted_params.clone();
     fitted_walked.sim.cycles = walked.sim.cycles;
     let end_comparison = normative::compare(path, &fitted_walked, reference)?;
     Ok(FitResult {
         start,
-        fitted: FIT_KEYS.iter().zip(&best).map(|(k, x)| k.min + (k.max - k.min) * x).collect(),
+        fitted,
         cost: (start_cost, cost),
         comparison: (start_comparison, end_comparison),
         evaluations: evaluations.get(),

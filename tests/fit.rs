@@ -61,6 +61,15 @@ fn the_fitted_config_keeps_the_comments_walks_cleanly_and_compares_as_reported()
     let text = std::fs::read_to_string(&file).unwrap();
     assert!(text.starts_with("# Fitted by `gaitlab fit` against Fukuchi"), "{text}");
     assert!(text.contains("# preset: normal adult walk at 1.3 m/s"), "the input's comments are kept");
+    // Each fitted key is written at its resolution (3 decimals in cm, 4 in a cycle), as a
+    // person would write it, and the figures reported are that written config's (below).
+    for key in gaitlab::fit::FIT_KEYS {
+        let name = key.key.split('.').nth(1).unwrap();
+        let line =
+            text.lines().find(|l| l.starts_with(&format!("{name} = "))).unwrap_or_else(|| panic!("{name}: {text}"));
+        let decimals = line.split('.').nth(1).map_or(0, str::len);
+        assert!(decimals <= key.decimals, "{line}: more than {} decimals", key.decimals);
+    }
     // The --set values and the fitted keys are in the file: it walks as fitted, and cleanly.
     let snapshot = gaitlab(&["snapshot", "--update", file.to_str().unwrap()]);
     assert!(snapshot.status.success(), "{}", String::from_utf8_lossy(&snapshot.stderr));
