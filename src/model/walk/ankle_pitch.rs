@@ -196,6 +196,33 @@ mod tests {
         assert!(worst < 1e-9, "worst ankle error {worst} rad");
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(3000))]
+        /// Any heel the leg can reach, any ankle angle and yaw the walk can ask: the pitch
+        /// gives the angle within a nanoradian, whichever start the solve took (the closed
+        /// form, or the dorsiflexion where the closed form has no answer).
+        #[test]
+        fn any_reachable_heel_gets_its_ankle_angle(
+            heel_x in -0.5_f64..0.45,
+            below_hip in 0.55_f64..0.95,
+            dorsi_deg in -30.0_f64..25.0,
+            yaw_deg in -10.0_f64..30.0,
+        ) {
+            let r = WalkParams::default().resolve();
+            let hip = DVec3::new(0.0, 0.9, 0.0);
+            let heel = DVec3::new(heel_x, 0.9 - below_hip, 0.0);
+            let yaw = yaw_deg.to_radians();
+            let pitch = foot_pitch_for_ankle(hip, heel, yaw, dorsi_deg.to_radians(), &r);
+            proptest::prop_assert!(pitch.is_finite() && pitch.abs() <= std::f64::consts::PI + 0.5);
+            let (got, ankle) = ankle_of(hip, heel, yaw, pitch, &r);
+            let (dx, dy) = (ankle.x - hip.x, ankle.y - hip.y);
+            let sagittal = (dx * dx + dy * dy).sqrt();
+            if sagittal < r.dims.leg_reach() * 0.999 && sagittal > (r.dims.thigh - r.dims.shank).abs() + 0.05 {
+                proptest::prop_assert!((got - dorsi_deg.to_radians()).abs() < 1e-9, "error {} rad", got - dorsi_deg.to_radians());
+            }
+        }
+    }
+
     #[test]
     fn the_closed_form_start_is_the_knee_forward_answer() {
         // The closed form's other root bends the knee backward; the one taken must be within
