@@ -14,7 +14,7 @@ use glam::DVec3;
 ///
 /// The pitch p solves p = shank(ankle(p)) + dorsi, the shank angle being the two-bone IK's
 /// ([`shank_angle`](super::gait::shank_angle)). Started from the closed form of
-/// [`PitchSolve::closed_form`], one Newton step lands within 1e-9 rad on the walks measured;
+/// `PitchSolve::closed_form` (below), one Newton step lands within 1e-9 rad on the walks measured;
 /// from the dorsiflexion itself, where the leg is nearly straight and the residual curves hard,
 /// Newton takes five or six (the plain fixed-point iteration crawled: three passes left
 /// 0.1–0.6° with the knee bent and up to 7° near full reach).
