@@ -25,7 +25,12 @@ pub fn foot_pitch_for_ankle(hip: DVec3, heel: DVec3, yaw: f64, dorsi: f64, r: &R
     let mut turn = guess.unwrap_or((leg.cos_dorsi, leg.sin_dorsi));
     let mut pitch = guess.map_or(dorsi, |(cos, sin)| sin.atan2(cos));
     let mut from_guess = guess.is_some();
-    for _ in 0..10 {
+    // The pitches seen with the residual positive and negative: the root lies between. Where
+    // the asked angle needs the leg at full reach, the residual turns a corner there (its slope
+    // infinite on the reachable side) and Newton's steps alone jump across it back and forth
+    // (3.6° off after ten); a step that would leave the bracket halves it instead.
+    let (mut above, mut below) = (None::<f64>, None::<f64>);
+    for _ in 0..64 {
         let (g, slope) = leg.residual(turn);
         // A start whose residual is not small (the yaw's correction missed, or the closed
         // form's branch is not the IK's) falls back to the dorsiflexion.
@@ -37,12 +42,28 @@ pub fn foot_pitch_for_ankle(hip: DVec3, heel: DVec3, yaw: f64, dorsi: f64, r: &R
         if g.abs() < 1e-9 {
             break;
         }
+        if g > 0.0 {
+            above = Some(pitch);
+        } else {
+            below = Some(pitch);
+        }
         // A flat slope (the shank turning with the foot one for one) has no Newton step; the
         // fixed-point step still moves toward the root there.
-        pitch += if slope.abs() > 1e-6 { (-g / slope).clamp(-0.5, 0.5) } else { g };
+        let mut next = pitch + if slope.abs() > 1e-6 { (-g / slope).clamp(-0.5, 0.5) } else { g };
+        let mut newton = true;
+        if let (Some(a), Some(b)) = (above, below) {
+            if (a - b).abs() < 1e-12 {
+                break;
+            }
+            if next <= a.min(b) || next >= a.max(b) {
+                (next, newton) = (0.5 * (a + b), false);
+            }
+        }
+        pitch = next;
         // The residual falls with the square of its size (to about 7 g² on the walks
-        // measured): a step from below 1e-5 lands within 1e-9, with no evaluation to confirm.
-        if g.abs() < 1e-5 {
+        // measured): a Newton step from below 1e-5 lands within 1e-9, with no evaluation to
+        // confirm.
+        if newton && g.abs() < 1e-5 {
             break;
         }
         let (sin, cos) = pitch.sin_cos();
