@@ -22,7 +22,8 @@ use crate::model::walk::gait::place_footfall;
 use crate::model::walk::leg::{Footfall, LegPhase, LegState};
 use crate::model::walk::pace::{PaceEvent, PaceEventKind, STANDING_REACH};
 use crate::model::walk::pace_state::{StartStage, StopStage};
-use crate::model::walk::pelvis::{KeyKind, Launch, PelvisKey, PelvisPlan, Settle};
+use crate::model::walk::pelvis::{KeyKind, Launch, PelvisKey, PelvisPlan, PelvisPose, Settle};
+use glam::DVec3;
 
 /// The first step's length as a share of a steady step: published gait initiation sets the
 /// first foot down at 60–80 % of a steady step (e.g. Jian et al. 1993; Brunt et al. 1999),
@@ -182,26 +183,38 @@ impl Walker {
             plan.launch(keys, launch);
             plan
         };
+        // Lowering the stance key moves the hips straight down and nothing else: the pelvis at
+        // each sample is worked out once, and a pass asks only its height again (the same
+        // numbers as a whole `pelvis_with_plan`, as in the reach guard).
+        let first = trial(keys);
+        let mut samples: Vec<(Side, f64, PelvisPose)> = Vec::new();
+        for (side, until) in flat_until {
+            let from = keys[0].phase;
+            let count = ((until - from) / 0.01).ceil().max(0.0) as usize;
+            samples.extend((0..=count).map(|n| {
+                let phase = (from + n as f64 * 0.01).min(until);
+                (side, phase, self.pelvis_with_plan(&first, phase))
+            }));
+        }
+        let hip_under = |plan: &PelvisPlan, side: Side, phase: f64, pose: &PelvisPose| {
+            let y = plan.height(phase, &self.gait.traj);
+            PelvisPose { position: DVec3::new(pose.position.x, y, pose.position.z), ..*pose }.hip(side.sign())
+        };
         for _pass in 0..4 {
             let plan = trial(keys);
             let mut probe = *keys;
             probe[1].y -= 0.01;
             let lowered = trial(&probe);
             let mut lower = 0.0f64;
-            for (side, until) in flat_until {
+            for (side, phase, pose) in &samples {
                 let ankle = self.legs[side.index()].anchor;
-                let from = keys[0].phase;
-                let samples = ((until - from) / 0.01).ceil().max(0.0) as usize;
-                for n in 0..=samples {
-                    let phase = (from + n as f64 * 0.01).min(until);
-                    let hip = self.pelvis_with_plan(&plan, phase).hip(side.sign());
-                    let d = hip - ankle;
-                    let horizontal_sq = d.x * d.x + d.z * d.z;
-                    let deficit = d.y - (limit * limit - horizontal_sq).max(0.0).sqrt();
-                    let moves = (hip.y - self.pelvis_with_plan(&lowered, phase).hip(side.sign()).y) / 0.01;
-                    if deficit > 0.0 && moves > 0.05 {
-                        lower = lower.max(deficit / moves + 1e-4);
-                    }
+                let hip = hip_under(&plan, *side, *phase, pose);
+                let d = hip - ankle;
+                let horizontal_sq = d.x * d.x + d.z * d.z;
+                let deficit = d.y - (limit * limit - horizontal_sq).max(0.0).sqrt();
+                let moves = (hip.y - hip_under(&lowered, *side, *phase, pose).y) / 0.01;
+                if deficit > 0.0 && moves > 0.05 {
+                    lower = lower.max(deficit / moves + 1e-4);
                 }
             }
             if lower <= 0.0 {
