@@ -3,7 +3,7 @@
 //! knee and ankle curves closest to the reference, every walk invariant kept.
 //!
 //! Why Nelder–Mead, written here: the cost is a whole walk (no gradient; finite differences
-//! would cost a walk per key per step and the reach guard makes it piecewise), there are six
+//! would cost a walk per key per step and the reach guard makes it piecewise), there are eight
 //! keys, and the search must be deterministic and bounded. The method is sixty lines; a
 //! crate (argmin) would bring its solver framework for the same loop.
 //!
@@ -23,31 +23,68 @@ use std::path::Path;
 pub struct FitKey {
     /// The config key.
     pub key: &'static str,
-    /// Least value.
-    pub min: f64,
-    /// Greatest value.
-    pub max: f64,
+    /// Least and greatest value for a config (fixed, or from the config's walking speed).
+    pub range: fn(&WalkParams) -> (f64, f64),
     /// Decimals the fitted value is written with: its resolution in the key's unit.
     pub decimals: usize,
     /// The key's value in force (derived keys have no value of their own until set).
     start: fn(&WalkParams, &Resolved) -> f64,
 }
 
+/// The cadence the fit may give a walk: the speed norms' mean ± 1 SD at its speed
+/// (`data/normative/spatiotemporal_by_speed.csv`). Cadence is the strongest lever on the knee
+/// (a shorter stride lets the pelvis stand higher over the feet), and left free the fit
+/// takes it to +1.8 SD (130 steps/min at 1.3 m/s, where people walk 118.5 ± 6.5): bounded,
+/// the joint curves cannot be bought with a gait no one walks. A config that sets its stride
+/// keeps the cadence that stride gives (the two set together would fix a different speed).
+fn cadence_range(params: &WalkParams) -> (f64, f64) {
+    if params.walk.stride_m.is_some() {
+        let cadence = 120.0 / params.resolve().cycle_s;
+        return (cadence, cadence);
+    }
+    let (mean, sd) = normative::SpeedNorms::built_in().at(params.walk.speed_mps).cadence_spm;
+    (mean - sd, mean + sd)
+}
+
 /// The keys fitted. Bounds are the parts of each key's valid range a walk can use.
-pub const FIT_KEYS: [FitKey; 6] = [
-    FitKey { key: "pelvis.midstance_drop_cm", min: 0.0, max: 5.0, decimals: 3, start: |_, r| r.midstance_drop * 100.0 },
-    FitKey { key: "pelvis.vertical_range_cm", min: 0.5, max: 6.0, decimals: 3, start: |_, r| r.vertical_range * 100.0 },
+pub const FIT_KEYS: [FitKey; 8] = [
+    FitKey {
+        key: "pelvis.midstance_drop_cm",
+        range: |_| (0.0, 5.0),
+        decimals: 3,
+        start: |_, r| r.midstance_drop * 100.0,
+    },
+    FitKey {
+        key: "pelvis.vertical_range_cm",
+        range: |_| (0.5, 6.0),
+        decimals: 3,
+        start: |_, r| r.vertical_range * 100.0,
+    },
     FitKey {
         key: "pelvis.midstance_offset_cm",
-        min: 5.0,
-        max: 25.0,
+        range: |_| (5.0, 25.0),
         decimals: 3,
         start: |_, r| r.midstance_offset * 100.0,
     },
-    FitKey { key: "legs.foot_flat", min: 0.03, max: 0.2, decimals: 4, start: |_, r| r.foot_flat },
-    FitKey { key: "legs.heel_rise", min: 0.22, max: 0.45, decimals: 4, start: |_, r| r.heel_rise },
-    FitKey { key: "legs.knee_lift_cm", min: 0.0, max: 8.0, decimals: 3, start: |_, r| r.knee_lift * 100.0 },
+    FitKey { key: "legs.foot_flat", range: |_| (0.03, 0.2), decimals: 4, start: |_, r| r.foot_flat },
+    FitKey { key: "legs.heel_rise", range: |_| (0.22, 0.45), decimals: 4, start: |_, r| r.heel_rise },
+    FitKey { key: "legs.knee_lift_cm", range: |_| (0.0, 8.0), decimals: 3, start: |_, r| r.knee_lift * 100.0 },
+    FitKey { key: "walk.cadence_spm", range: cadence_range, decimals: 2, start: |_, r| 120.0 / r.cycle_s },
+    // Obliquity lifts the stance hip in loading response and drops it in pre-swing; the
+    // reference's range is 11.2 deg, the default 7.
+    FitKey {
+        key: "pelvis.obliquity_range_deg",
+        range: |_| (3.0, 12.0),
+        decimals: 2,
+        start: |_, r| r.obliquity_range.to_degrees(),
+    },
 ];
+
+/// Each fitted key's range for `params`, in [`FIT_KEYS`] order.
+#[must_use]
+pub fn ranges(params: &WalkParams) -> Vec<(f64, f64)> {
+    FIT_KEYS.iter().map(|k| (k.range)(params)).collect()
+}
 
 /// How long the fit may search.
 #[derive(Clone, Copy, Debug)]
@@ -71,6 +108,8 @@ pub struct FitResult {
     pub start: Vec<f64>,
     /// Their fitted values.
     pub fitted: Vec<f64>,
+    /// The range each key was searched in.
+    pub ranges: Vec<(f64, f64)>,
     /// Cost at the start and at the end (mean RMS, deg, plus penalties).
     pub cost: (f64, f64),
     /// The comparison at the start and at the end.
@@ -100,9 +139,19 @@ fn cost_of(path: &Path, params: &WalkParams, reference: &Reference) -> (f64, Opt
     if cost.is_finite() { (cost, Some(c)) } else { (f64::INFINITY, Some(c)) }
 }
 
-/// `params` with the fitted keys at `u` (each in 0..1 of its range).
-fn with_keys(params: &WalkParams, u: &[f64]) -> WalkParams {
-    let values: Vec<f64> = FIT_KEYS.iter().zip(u).map(|(k, &x)| k.min + (k.max - k.min) * x.clamp(0.0, 1.0)).collect();
+/// The value at `x` (0..1) of `range`.
+fn at(range: (f64, f64), x: f64) -> f64 {
+    range.0 + (range.1 - range.0) * x.clamp(0.0, 1.0)
+}
+
+/// Where `v` lies in `range`, 0..1 (the middle of an empty range).
+fn share(range: (f64, f64), v: f64) -> f64 {
+    if range.1 - range.0 < 1e-12 { 0.5 } else { ((v - range.0) / (range.1 - range.0)).clamp(0.0, 1.0) }
+}
+
+/// `params` with the fitted keys at `u` (each in 0..1 of its range in `ranges`).
+fn with_keys(params: &WalkParams, ranges: &[(f64, f64)], u: &[f64]) -> WalkParams {
+    let values: Vec<f64> = ranges.iter().zip(u).map(|(&range, &x)| at(range, x)).collect();
     with_values(params, &values)
 }
 
@@ -118,12 +167,12 @@ fn with_values(params: &WalkParams, values: &[f64]) -> WalkParams {
 
 /// The fitted keys at `u`, each at its written resolution ([`FitKey::decimals`]): the
 /// nearest double to the decimal, so the config reads `17.389`, not `17.38907943774207`.
-fn written_values(u: &[f64]) -> Vec<f64> {
+fn written_values(ranges: &[(f64, f64)], u: &[f64]) -> Vec<f64> {
     FIT_KEYS
         .iter()
-        .zip(u)
-        .map(|(k, &x)| {
-            let v = k.min + (k.max - k.min) * x.clamp(0.0, 1.0);
+        .zip(ranges.iter().zip(u))
+        .map(|(k, (&range, &x))| {
+            let v = at(range, x);
             format!("{v:.*}", k.decimals).parse::<f64>().expect("a formatted number parses")
         })
         .collect()
@@ -135,15 +184,15 @@ pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: Fit
     walked.sim.cycles = options.cycles.max(*measure::CYCLES.start());
     let r = params.resolve();
     let start: Vec<f64> = FIT_KEYS.iter().map(|k| (k.start)(params, &r)).collect();
-    let u0: Vec<f64> =
-        FIT_KEYS.iter().zip(&start).map(|(k, &v)| ((v - k.min) / (k.max - k.min)).clamp(0.0, 1.0)).collect();
+    let ranges = ranges(params);
+    let u0: Vec<f64> = ranges.iter().zip(&start).map(|(&range, &v)| share(range, v)).collect();
     // The start as the config has it (not clamped into the bounds) is what the fit must beat.
     let start_comparison = normative::compare(path, &walked, reference)?;
     let (start_cost, _) = cost_of(path, &walked, reference);
     let evaluations = std::cell::Cell::new(1_u32);
     let mut f = |u: &[f64]| {
         evaluations.set(evaluations.get() + 1);
-        cost_of(path, &with_keys(&walked, u), reference).0
+        cost_of(path, &with_keys(&walked, &ranges, u), reference).0
     };
     // Nelder–Mead settles in the first dip it finds and its simplex shrinks there; it is
     // restarted around its answer with a fresh simplex (a tenth of each range) while walks
@@ -162,7 +211,7 @@ pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: Fit
     }
     // The answer as it is written (each key at its resolution) is walked once more: the
     // figures reported are the written config's, not the search's unrounded point's.
-    let written = written_values(&best_u);
+    let written = written_values(&ranges, &best_u);
     let written_cost = if best_cost < start_cost {
         evaluations.set(evaluations.get() + 1);
         cost_of(path, &with_values(&walked, &written), reference).0
@@ -180,6 +229,7 @@ pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: Fit
     Ok(FitResult {
         start,
         fitted,
+        ranges,
         cost: (start_cost, cost),
         comparison: (start_comparison, end_comparison),
         evaluations: evaluations.get(),
@@ -267,20 +317,18 @@ mod tests {
         let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
         let path = Path::new("default.toml");
         let mut p = WalkParams::default();
-        let u = |key: &str, v: f64| {
-            let k = FIT_KEYS.iter().find(|k| k.key == key).unwrap();
-            (v - k.min) / (k.max - k.min)
-        };
+        let ranges = ranges(&p);
+        let u = |key: &str, v: f64| share(ranges[FIT_KEYS.iter().position(|k| k.key == key).unwrap()], v);
         let start: Vec<f64> = FIT_KEYS.iter().map(|k| (k.start)(&p, &p.resolve())).collect();
-        let mut keys: Vec<f64> = FIT_KEYS.iter().zip(&start).map(|(k, v)| (v - k.min) / (k.max - k.min)).collect();
+        let mut keys: Vec<f64> = ranges.iter().zip(&start).map(|(&range, &v)| share(range, v)).collect();
         keys[3] = u("legs.foot_flat", 0.185);
         keys[4] = u("legs.heel_rise", 0.23);
-        let rejected = with_keys(&p, &keys);
+        let rejected = with_keys(&p, &ranges, &keys);
         assert!(!cross_check(&rejected).is_empty());
         assert_eq!(cost_of(path, &rejected, &reference).0, f64::INFINITY);
         // 0.06 after: accepted, and a walk like any other.
         keys[4] = u("legs.heel_rise", 0.245);
-        p = with_keys(&p, &keys);
+        p = with_keys(&p, &ranges, &keys);
         assert!(cross_check(&p).is_empty());
         assert!(cost_of(path, &p, &reference).0.is_finite());
     }

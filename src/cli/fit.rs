@@ -68,7 +68,11 @@ fn fitted_config(
 ) -> Result<String> {
     let read = config::load_text(text, "config", &[])?;
     let mut keys: Vec<&str> = PARAMS.iter().filter(|p| (p.get)(&read) != (p.get)(params)).map(|p| p.key).collect();
-    keys.extend(FIT_KEYS.iter().map(|k| k.key));
+    // A key with nothing to search (the cadence of a config that sets its stride) is not
+    // written: pinned beside the stride it would fix the walk's speed as well.
+    let fitted: Vec<&str> =
+        FIT_KEYS.iter().zip(&result.ranges).filter(|(_, (min, max))| max > min).map(|(k, _)| k.key).collect();
+    keys.extend(fitted.iter().copied());
     let body = config::edit::edited_text(text, &result.params, &keys).map_err(Error::Usage)?;
     let (before, after) = (rms_line(&result.comparison.0), rms_line(&result.comparison.1));
     Ok(format!(
@@ -76,7 +80,7 @@ fn fitted_config(
          # Hip / knee / ankle RMS difference (deg): {before} before, {after} after ({} walks).\n\
          # Keys fitted: {}.\n\n{body}",
         result.evaluations,
-        FIT_KEYS.iter().map(|k| k.key).collect::<Vec<_>>().join(", ")
+        fitted.join(", ")
     ))
 }
 
@@ -102,8 +106,8 @@ fn write_table(
         r.evaluations
     )?;
     writeln!(out, "{:<28} {:>9} {:>9}  range", "key", "start", "fitted")?;
-    for ((k, start), fitted) in FIT_KEYS.iter().zip(&r.start).zip(&r.fitted) {
-        writeln!(out, "{:<28} {start:>9.3} {fitted:>9.3}  {} to {}", k.key, k.min, k.max)?;
+    for (((k, start), fitted), (min, max)) in FIT_KEYS.iter().zip(&r.start).zip(&r.fitted).zip(&r.ranges) {
+        writeln!(out, "{:<28} {start:>9.3} {fitted:>9.3}  {} to {}", k.key, short(*min), short(*max))?;
     }
     writeln!(
         out,
@@ -129,7 +133,8 @@ fn write_json(out: &mut dyn Write, r: &FitResult, seconds: f64) -> io::Result<()
         .iter()
         .zip(&r.start)
         .zip(&r.fitted)
-        .map(|((k, s), f)| serde_json::json!({"key": k.key, "start": s, "fitted": f, "min": k.min, "max": k.max}))
+        .zip(&r.ranges)
+        .map(|(((k, s), f), (min, max))| serde_json::json!({"key": k.key, "start": s, "fitted": f, "min": min, "max": max}))
         .collect();
     let line = serde_json::json!({
         "keys": keys,
@@ -141,4 +146,11 @@ fn write_json(out: &mut dyn Write, r: &FitResult, seconds: f64) -> io::Result<()
         "curves_after": r.comparison.1.curves,
     });
     writeln!(out, "{line}")
+}
+
+/// `v` with at most three decimals and no trailing zeros (a range from the speed norms is
+/// not a round number).
+fn short(v: f64) -> String {
+    let text = format!("{v:.3}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
