@@ -302,26 +302,64 @@ pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Re
     }
 }
 
+/// The swing curves' values at one swing fraction: all a swing target takes from its plan's
+/// curves. The swing simulation asks each of its instants again after each raise of the heel
+/// curve and the reach guard under each lowered pelvis, so they are worked out once there.
+#[derive(Clone, Copy, Debug)]
+pub struct SwingCurvesAt {
+    /// Swing fraction, 0 at toe-off, 1 at heel strike.
+    pub s: f64,
+    /// Forward progress from the toe-off heel to the footfall (0 to 1).
+    pub progress: f64,
+    /// Weight toward the hip line (0 to 1).
+    pub lateral: f64,
+    /// Heel height above the toe-off ground (m).
+    pub heel_height: f64,
+    /// The ankle against the shank (deg, dorsiflexion +).
+    pub ankle_deg: f64,
+}
+
+impl SwingCurvesAt {
+    /// `plan`'s curves at swing fraction `s`.
+    #[must_use]
+    pub fn of(plan: &SwingPlan, s: f64) -> Self {
+        SwingCurvesAt {
+            s,
+            progress: plan.forward.eval(s),
+            lateral: plan.lateral.eval(s),
+            heel_height: plan.heel_height.eval(s),
+            ankle_deg: plan.ankle_deg.eval(s),
+        }
+    }
+}
+
 /// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
 /// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
 /// line toward the hip line and back, up on the heel-height curve; the foot set by the ankle
 /// curve against the shank the leg will have (from `hip`); toes back to neutral over the first
 /// fifth of the swing.
 #[must_use]
+pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved, hip: DVec3) -> LegTarget {
+    swing_target_at(plan, &SwingCurvesAt::of(plan, s), side, r, hip)
+}
+
+/// [`swing_target`] with the curves' values at its instant already worked out.
+#[must_use]
 // Run in the planner's swing simulation and reach guard, hundreds of times a step; with the
 // planner in its own file (another codegen unit) it is only inlined there when marked.
 #[inline]
-pub fn swing_target(plan: &SwingPlan, s: f64, side: Side, r: &Resolved, hip: DVec3) -> LegTarget {
+pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Resolved, hip: DVec3) -> LegTarget {
+    let s = at.s;
     let from = plan.heel_from;
     let to = plan.to.heel;
-    let progress = plan.forward.eval(s);
+    let progress = at.progress;
     let x = from.x + (to.x - from.x) * progress;
     let line_z = from.z + (to.z - from.z) * progress;
     let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
-    let z = line_z + (hip_line_z - line_z) * plan.lateral.eval(s);
-    let y = plan.ground_from + plan.heel_height.eval(s);
+    let z = line_z + (hip_line_z - line_z) * at.lateral;
+    let y = plan.ground_from + at.heel_height;
     let heel = DVec3::new(x, y, z);
-    let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, plan.ankle_deg.eval(s).to_radians(), r);
+    let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, at.ankle_deg.to_radians(), r);
     // Just after toe-off the foot keeps its pitch and hands it to the ankle curve over the
     // first 15 % of the swing. Hung from the shank at once, a leg still stretched from the
     // push-off feeds on itself: the hip runs ahead, the shank leans, the steeper foot drops

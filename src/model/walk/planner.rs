@@ -12,7 +12,7 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::gait::{MIN_STRIKE_ANGLE, shank_angle, swing_target};
+use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SwingCurvesAt, shank_angle, swing_target_at};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
 use crate::model::walk::pace_state::StepKind;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
@@ -353,6 +353,8 @@ impl Walker {
         // the default walk about four passes ran, each solving all fifty samples again).
         let hips: [DVec3; SWING_SAMPLES] =
             std::array::from_fn(|i| self.pelvis_at(toe_off_phase + sample_s(i) * span).hip(side.sign()));
+        // Only the heel-height curve is raised: the other curves' values at each sample hold.
+        let curves: [SwingCurvesAt; SWING_SAMPLES] = std::array::from_fn(|i| SwingCurvesAt::of(plan, sample_s(i)));
         let mut solved: [Option<SolvedSample>; SWING_SAMPLES] = [None; SWING_SAMPLES];
         for _pass in 0..8 {
             let mut raised = false;
@@ -364,7 +366,7 @@ impl Walker {
                 let sample = match solved[i] {
                     Some(sample) if sample.heel_height.to_bits() == heel_height.to_bits() => sample,
                     _ => {
-                        let target = swing_target(plan, s, side, r, hip);
+                        let target = swing_target_at(plan, &SwingCurvesAt { heel_height, ..curves[i] }, side, r, hip);
                         SolvedSample { heel_height, target, pose: None }
                     }
                 };

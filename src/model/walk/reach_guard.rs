@@ -7,7 +7,7 @@
 use crate::model::body::Side;
 use crate::model::walk::Walker;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, swing_target};
+use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, SwingCurvesAt, swing_target_at};
 use crate::model::walk::leg::{Footfall, LegPhase, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
 use glam::DVec3;
@@ -57,18 +57,20 @@ impl Walker {
         // playing already, and moving its key would make the pelvis jump.
         let ds_phase = self.movable_key_phase(KeyKind::DoubleSupport, playing_at);
         let ms_phase = self.movable_key_phase(KeyKind::MidStance, playing_at);
-        let points = self.guard_points(side, strike_phase, swing.is_some(), limit);
+        let points = self.guard_points(side, strike_phase, swing, limit);
         let mut dropped = 0.0;
         for _ in 0..6 {
             let deficits: Vec<(f64, f64)> = points
                 .iter()
                 .filter_map(|point| {
                     let hip = self.rekeyed_hip(&point.pose, point.x, point.phase, point.side_sign);
-                    let allowed = point.allowed.unwrap_or_else(|| {
-                        let plan = swing.expect("a point with no fixed height is a swing's");
-                        let s = 1.0 - (strike_phase - point.phase) / (1.0 - r.toe_off);
-                        allowed_height(hip, swing_target(plan, s, side, &r, hip).ankle, limit)
-                    });
+                    let allowed = match (&point.allowed, swing) {
+                        (Allowed::Height(height), _) => *height,
+                        (Allowed::Swing(at), Some(plan)) => {
+                            allowed_height(hip, swing_target_at(plan, at, side, &r, hip).ankle, limit)
+                        }
+                        (Allowed::Swing(_), None) => unreachable!("swing samples are made from a plan"),
+                    };
                     (hip.y > allowed).then_some((point.phase, hip.y - allowed))
                 })
                 .collect();
@@ -87,8 +89,9 @@ impl Walker {
     /// leg's first. Lowering keys moves the hips straight down, so what a pass needs again is
     /// each hip's height: forward positions and, but for the swing's samples (whose ankle
     /// follows the hip), the allowed heights are worked out once here.
-    fn guard_points(&self, side: Side, strike_phase: f64, with_swing: bool, limit: f64) -> Vec<GuardPoint> {
+    fn guard_points(&self, side: Side, strike_phase: f64, swing: Option<&SwingPlan>, limit: f64) -> Vec<GuardPoint> {
         let r = &self.gait.r;
+        let with_swing = swing.is_some();
         let footfall = self.legs[side.index()].footfall;
         let strike_angle = self.legs[side.index()].strike_angle;
         let mut points = Vec::with_capacity(28);
@@ -100,7 +103,7 @@ impl Walker {
             for &phase in &t.phases {
                 let (pose, x, side_sign) = (self.pelvis_at(phase), self.rekeyed_x(phase), side.other().sign());
                 let allowed = t.allowed(self.rekeyed_hip(&pose, x, phase, side_sign), limit);
-                let allowed = Some(if allowed.is_finite() { allowed } else { f64::INFINITY });
+                let allowed = Allowed::Height(if allowed.is_finite() { allowed } else { f64::INFINITY });
                 points.push(GuardPoint { phase, pose, x, side_sign, allowed });
             }
         }
@@ -118,12 +121,17 @@ impl Walker {
         );
         for phase in samples {
             let (pose, x, side_sign) = (self.pelvis_at(phase), self.rekeyed_x(phase), side.sign());
-            let allowed = (!with_swing || phase >= strike_phase).then(|| {
-                let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
-                let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
-                let ankle = footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local();
-                allowed_height(self.rekeyed_hip(&pose, x, phase, side_sign), ankle, limit)
-            });
+            let allowed = match swing {
+                Some(plan) if phase < strike_phase => {
+                    Allowed::Swing(SwingCurvesAt::of(plan, 1.0 - (strike_phase - phase) / (1.0 - r.toe_off)))
+                }
+                _ => {
+                    let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
+                    let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
+                    let ankle = footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local();
+                    Allowed::Height(allowed_height(self.rekeyed_hip(&pose, x, phase, side_sign), ankle, limit))
+                }
+            };
             points.push(GuardPoint { phase, pose, x, side_sign, allowed });
         }
         points
@@ -264,9 +272,17 @@ struct GuardPoint {
     /// Its forward position, which no lowering moves.
     x: f64,
     side_sign: f64,
-    /// The highest the hip may be (m); `None` for a sample of the swing, whose ankle moves
-    /// with the hip and is asked again on each pass.
-    allowed: Option<f64>,
+    /// How high the hip may be.
+    allowed: Allowed,
+}
+
+/// How high a guard point's hip may be.
+enum Allowed {
+    /// At most this (m).
+    Height(f64),
+    /// As high as the swing's ankle there allows: it moves with the hip (the foot's pitch is
+    /// set against the shank), so it is asked again on each pass, from the curves' values.
+    Swing(SwingCurvesAt),
 }
 
 /// The highest `hip` may be, at its horizontal place, for a leg reaching `limit` to reach
