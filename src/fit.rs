@@ -72,13 +72,27 @@ pub const FIT_KEYS: [FitKey; 8] = [
     FitKey { key: "walk.cadence_spm", range: cadence_range, decimals: 2, start: |_, r| 120.0 / r.cycle_s },
     // Obliquity lifts the stance hip in loading response and drops it in pre-swing; the
     // reference's range is 11.2 deg, the default 7.
-    FitKey {
-        key: "pelvis.obliquity_range_deg",
-        range: |_| (3.0, 12.0),
-        decimals: 2,
-        start: |_, r| r.obliquity_range.to_degrees(),
-    },
+    FitKey { key: "pelvis.obliquity_range_deg", range: obliquity_range, decimals: 2, start: |p, _| obliquity_key(p) },
 ];
+
+/// The obliquity key's value in force: the range before the sway knob scales it (the
+/// resolved range is the key times `walk.sway`).
+fn obliquity_key(params: &WalkParams) -> f64 {
+    let mut unswayed = params.clone();
+    unswayed.walk.sway = 1.0;
+    unswayed.resolve().obliquity_range.to_degrees()
+}
+
+/// The obliquity key's range: none to search where the sway knob is 0 (the key then moves
+/// nothing).
+fn obliquity_range(params: &WalkParams) -> (f64, f64) {
+    if params.walk.sway > 0.0 {
+        (3.0, 12.0)
+    } else {
+        let key = obliquity_key(params);
+        (key, key)
+    }
+}
 
 /// Each fitted key's range for `params`, in [`FIT_KEYS`] order.
 #[must_use]
@@ -309,6 +323,36 @@ mod tests {
         assert!((x[0] - 0.3).abs() < 0.01 && (x[1] - 0.7).abs() < 0.01, "{x:?}");
         // The third minimum lies outside the cube: the search ends on its face.
         assert!(x[2] == 0.0 && (v - 0.25).abs() < 1e-3, "{x:?} {v}");
+    }
+
+    #[test]
+    fn each_keys_start_is_its_value_in_force_so_setting_it_changes_nothing() {
+        // A start read from a resolved value the key is only one factor of (the obliquity
+        // range is the key times the sway knob) would be written back scaled: wide_sway.toml
+        // (sway 2) started the fit at 14 deg for a key of 7.
+        for name in ["default", "wide_sway", "stairs_up", "elderly"] {
+            let p = crate::config::presets::params(name).unwrap().unwrap();
+            let r = p.resolve();
+            // What the fitted keys set, resolved (a cadence set back gives the stride to an ulp).
+            let set = |r: &Resolved| {
+                [
+                    r.midstance_drop,
+                    r.vertical_range,
+                    r.midstance_offset,
+                    r.foot_flat,
+                    r.heel_rise,
+                    r.knee_lift,
+                    r.cycle_s,
+                    r.stride_m,
+                    r.obliquity_range,
+                ]
+            };
+            let starts: Vec<f64> = FIT_KEYS.iter().map(|k| (k.start)(&p, &r)).collect();
+            let again = with_values(&p, &starts).resolve();
+            for (a, b) in set(&again).into_iter().zip(set(&r)) {
+                assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{name}: {:?} against {:?}", set(&again), set(&r));
+            }
+        }
     }
 
     #[test]
