@@ -267,13 +267,14 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
 /// One line: file and saved state, speed, frame rate, terrain, the walk's state, the last
 /// message. The message is what the user just asked about, so where the line is too narrow
 /// the other parts give way first — the frame rate, the terrain, the speed, then the file's
-/// folders (its name stays) — and only then is the message cut, with an ellipsis.
+/// folders (its name stays, and the others come back beside it where they fit), then the
+/// name — and only then is the message cut, with an ellipsis.
 pub(crate) fn draw_status(f: &mut Frame, area: Rect, app: &App) {
     f.render_widget(Paragraph::new(status_line(app, usize::from(area.width))), area);
 }
 
 /// The status line for a terminal `width` columns wide (see [`draw_status`]).
-pub(crate) fn status_line(app: &App, width: usize) -> Line<'static> {
+fn status_line(app: &App, width: usize) -> Line<'static> {
     let saved = if app.is_modified() {
         Span::styled(
             format!(" modified ({}) ", app.unsaved_keys().len()),
@@ -298,38 +299,51 @@ pub(crate) fn status_line(app: &App, width: usize) -> Line<'static> {
         }
     };
     let full_label = app.file_label();
-    let short_label = app.path.as_ref().and_then(|p| p.file_name()).map(|n| n.to_string_lossy().into_owned());
-    let file = |label: &str| Span::styled(format!(" {label} "), Style::new().bold());
-    let green = Style::new().fg(Color::Green);
-    // From the fullest line to the barest: the first that leaves the message whole.
-    let mut candidates = vec![
-        vec![
-            file(&full_label),
-            saved.clone(),
-            Span::raw(format!(" {run}{fps} ")),
-            Span::styled(terrain.clone(), green),
-        ],
-        vec![file(&full_label), saved.clone(), Span::raw(format!(" {run} ")), Span::styled(terrain, green)],
-        vec![file(&full_label), saved.clone(), Span::raw(format!(" {run} "))],
-        vec![file(&full_label), saved.clone(), Span::raw(" ")],
+    let name = app.path.as_ref().and_then(|p| p.file_name()).map(|n| n.to_string_lossy().into_owned());
+    // From the fullest line to the barest, the first that leaves the message whole: (file
+    // label, with speed, with frame rate, with terrain). Widths are counted before anything
+    // is built: the line is drawn every frame.
+    // Display columns, as the terminal counts them (`Span::raw` borrows: nothing allocated).
+    let columns = |text: &str| Span::raw(text).width();
+    let label_width = |label: &str| columns(label) + 2;
+    let run_width = columns(&run) + 2;
+    // With the folders gone, the speed, terrain and frame rate come back where they fit.
+    let levels: [(Option<&str>, bool, bool, bool); 9] = [
+        (Some(&full_label), true, true, true),
+        (Some(&full_label), true, false, true),
+        (Some(&full_label), true, false, false),
+        (Some(&full_label), false, false, false),
+        (name.as_deref(), true, true, true),
+        (name.as_deref(), true, false, true),
+        (name.as_deref(), true, false, false),
+        (name.as_deref(), false, false, false),
+        (None, false, false, false),
     ];
-    if let Some(name) = &short_label {
-        candidates.push(vec![file(name), saved.clone(), Span::raw(" ")]);
+    let level_width = |&(label, with_run, with_fps, with_terrain): &(Option<&str>, bool, bool, bool)| {
+        label.map_or(0, label_width)
+            + saved.width()
+            + if with_run { run_width + if with_fps { columns(&fps) } else { 0 } } else { 1 }
+            + if with_terrain { columns(&terrain) } else { 0 }
+    };
+    let fixed = state.width() + tail.width();
+    let (label, with_run, with_fps, with_terrain) =
+        levels.iter().find(|level| level_width(level) + fixed <= width).copied().unwrap_or(levels[levels.len() - 1]);
+    let mut spans = Vec::with_capacity(6);
+    if let Some(label) = label {
+        spans.push(Span::styled(format!(" {label} "), Style::new().bold()));
     }
-    candidates.push(vec![saved, Span::raw(" ")]);
-    let tail_width = tail.width();
-    let barest = candidates.len() - 1;
-    let mut spans = candidates
-        .into_iter()
-        .enumerate()
-        .find(|(i, head)| {
-            *i == barest || head.iter().map(Span::width).sum::<usize>() + state.width() + tail_width <= width
-        })
-        .map(|(_, head)| head)
-        .expect("the barest line is always taken");
+    spans.push(saved);
+    spans.push(match (with_run, with_fps) {
+        (true, true) => Span::raw(format!(" {run}{fps} ")),
+        (true, false) => Span::raw(format!(" {run} ")),
+        _ => Span::raw(" "),
+    });
+    if with_terrain {
+        spans.push(Span::styled(terrain, Style::new().fg(Color::Green)));
+    }
     spans.push(state);
     let room = width.saturating_sub(spans.iter().map(Span::width).sum::<usize>());
-    if tail_width > room && room > 0 {
+    if tail.width() > room && room > 0 {
         let cut: String = tail.content.chars().take(room - 1).collect();
         spans.push(Span::styled(format!("{cut}…"), tail.style));
     } else {
@@ -419,8 +433,10 @@ pub(crate) fn draw_overlay(f: &mut Frame, area: Rect, app: &App) {
         }
         Overlay::Recovery { found, error } => {
             let mut lines = vec![
-                Line::raw(format!("A lab on this config was cut off {} with unsaved edits,", found.age)),
-                Line::raw(format!("kept in {}.", found.path.display())),
+                // Two short lines: one long first line wrapped at 80 columns left "edits,"
+                // alone on the next.
+                Line::raw(format!("A lab on this config was cut off {}.", found.age)),
+                Line::raw(format!("Its unsaved edits are kept in {}.", found.path.display())),
                 Line::styled("l: load them   d: discard them   esc: decide later", Style::new().fg(Color::Yellow)),
             ];
             lines.extend(error_line(error));
