@@ -186,14 +186,14 @@ impl Walker {
         // Lowering the stance key moves the hips straight down and nothing else: the pelvis at
         // each sample is worked out once, and a pass asks only its height again (the same
         // numbers as a whole `pelvis_with_plan`, as in the reach guard).
-        let first = trial(keys);
+        let mut plan = trial(keys);
         let mut samples: Vec<(Side, f64, PelvisPose)> = Vec::new();
         for (side, until) in flat_until {
             let from = keys[0].phase;
             let count = ((until - from) / 0.01).ceil().max(0.0) as usize;
             samples.extend((0..=count).map(|n| {
                 let phase = (from + n as f64 * 0.01).min(until);
-                (side, phase, self.pelvis_with_plan(&first, phase))
+                (side, phase, self.pelvis_with_plan(&plan, phase))
             }));
         }
         let hip_under = |plan: &PelvisPlan, side: Side, phase: f64, pose: &PelvisPose| {
@@ -201,7 +201,6 @@ impl Walker {
             PelvisPose { position: DVec3::new(pose.position.x, y, pose.position.z), ..*pose }.hip(side.sign())
         };
         for _pass in 0..4 {
-            let plan = trial(keys);
             let mut probe = *keys;
             probe[1].y -= 0.01;
             let lowered = trial(&probe);
@@ -221,6 +220,7 @@ impl Walker {
                 break;
             }
             keys[1].y -= lower;
+            plan = trial(keys);
         }
     }
 

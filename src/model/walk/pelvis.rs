@@ -375,8 +375,9 @@ impl PelvisPlan {
         }
     }
 
-    /// The height of [`Self::position`] alone, the same number: the reach guard lowers keys
-    /// and asks again on each of its passes, and lowering moves no pelvis forward or back.
+    /// The height of [`Self::position`] alone, the same number: the reach guard and a start's
+    /// flat-feet check lower keys and ask again on each of their passes, and lowering moves
+    /// no pelvis forward or back.
     #[must_use]
     pub fn height(&self, phase: f64, curves: &TrajectoryCurves) -> f64 {
         let (a, b, u) = self.bracket(phase);
