@@ -141,8 +141,14 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
     let fixed: Vec<(f64, f64)> =
         plans.iter().filter_map(|p| p.optimisation.fixed_rule.cost.map(|c| (p.step as f64, c))).collect();
     let y = y_range(&[chosen.as_slice(), fixed.as_slice()]);
+    // Where the optimiser keeps the fixed rule the two lines are one; say so, or the fixed
+    // rule's line looks missing.
+    let caption = match kept_fixed_rule(plans) {
+        (0, _) => "cost per step".to_string(),
+        (kept, costed) => format!("cost per step (fixed rule kept on {kept} of {costed}: lines coincide)"),
+    };
     let mut chart = ChartBuilder::on(area)
-        .caption("cost per step", (FONT, 28))
+        .caption(caption, (FONT, 28))
         .margin(12)
         .x_label_area_size(50)
         .y_label_area_size(80)
@@ -160,9 +166,10 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         .map_err(err)?;
     // A line only joins consecutive steps: a step with no cost (a start's first step and a
     // stop's closing step are not costed) breaks it, instead of a line drawn across the gap
-    // as if the steps between had been walked at costs in between.
+    // as if the steps between had been walked at costs in between. The optimised line is
+    // drawn first and wider, the fixed rule's over it: where they coincide both still show.
     for (points, style, name) in
-        [(fixed, DESIGN.stroke_width(2), "fixed rule"), (chosen, RIGHT.stroke_width(3), "optimised")]
+        [(chosen, RIGHT.stroke_width(6), "optimised"), (fixed, DESIGN.stroke_width(2), "fixed rule")]
     {
         for (i, run) in points.chunk_by(|a, b| b.0 - a.0 < 1.5).enumerate() {
             let series = chart.draw_series(LineSeries::new(run.iter().copied(), style)).map_err(err)?;
@@ -173,4 +180,37 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
     }
     draw_legend(&mut chart, 18, None)?;
     Ok(())
+}
+
+/// Steps whose chosen double-support position is the fixed rule's, and the steps where both
+/// are costed (the optimiser ran and the fixed rule reached).
+fn kept_fixed_rule(plans: &[StepPlan]) -> (usize, usize) {
+    let costed =
+        plans.iter().map(|p| &p.optimisation).filter(|o| o.chosen.cost.is_some() && o.fixed_rule.cost.is_some());
+    costed.fold((0, 0), |(kept, n), o| (kept + usize::from((o.chosen.x - o.fixed_rule.x).abs() < 1e-9), n + 1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::params::WalkParams;
+
+    #[test]
+    fn the_steps_that_keep_the_fixed_rule_are_counted_among_those_costed() {
+        let mut params = WalkParams::default();
+        let run = crate::analysis::run(&params, 6.0, 60.0).unwrap();
+        let plans = &run.step_plans;
+        let (kept, costed) = kept_fixed_rule(plans);
+        let both =
+            plans.iter().filter(|p| p.optimisation.chosen.cost.is_some() && p.optimisation.fixed_rule.cost.is_some());
+        assert_eq!(costed, both.clone().count());
+        assert!(costed >= 8, "{costed}");
+        let same = both.filter(|p| p.optimisation.chosen.x == p.optimisation.fixed_rule.x).count();
+        assert_eq!(kept, same);
+        // The optimiser off: every costed step is the fixed rule's.
+        params.optimiser.enabled = false;
+        let off = crate::analysis::run(&params, 6.0, 60.0).unwrap();
+        let (kept_off, costed_off) = kept_fixed_rule(&off.step_plans);
+        assert!(costed_off >= 8 && kept_off == costed_off, "{kept_off} of {costed_off}");
+    }
 }
