@@ -286,11 +286,16 @@ enum Allowed {
 }
 
 /// The highest `hip` may be, at its horizontal place, for a leg reaching `limit` to reach
-/// `ankle` (the ankle's own height where it is beyond reach sideways).
-fn allowed_height(hip: DVec3, ankle: DVec3, limit: f64) -> f64 {
+/// `ankle`; `None` where the ankle is beyond reach sideways (no height reaches it).
+fn reach_top(hip: DVec3, ankle: DVec3, limit: f64) -> Option<f64> {
     let d = hip - ankle;
     let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-    if horizontal < limit { ankle.y + (limit * limit - horizontal * horizontal).sqrt() } else { ankle.y }
+    (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
+}
+
+/// [`reach_top`], or the ankle's own height where it is beyond reach sideways.
+fn allowed_height(hip: DVec3, ankle: DVec3, limit: f64) -> f64 {
+    reach_top(hip, ankle, limit).unwrap_or(ankle.y)
 }
 
 /// Heel-rise angles the trailing foot is tried at, from flat to [`MAX_HEEL_RISE`].
@@ -310,13 +315,6 @@ impl TrailingReach {
     /// foot at some heel-rise angle up to [`MAX_HEEL_RISE`] (m); −∞ if no lowering would help
     /// (the foot is too far behind).
     fn allowed(&self, hip: DVec3, limit: f64) -> f64 {
-        self.ankles
-            .iter()
-            .filter_map(|ankle| {
-                let d = hip - *ankle;
-                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
-            })
-            .fold(f64::NEG_INFINITY, f64::max)
+        self.ankles.iter().filter_map(|&ankle| reach_top(hip, ankle, limit)).fold(f64::NEG_INFINITY, f64::max)
     }
 }
