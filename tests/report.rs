@@ -521,3 +521,34 @@ fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
     assert!(!plain.join("plots/speed.png").exists() && !read(&plain, "summary.md").contains("## Pace"));
     let _ = std::fs::remove_dir_all(&plain);
 }
+
+/// optimisation.svg says where the optimiser kept the fixed rule (the two cost lines are one
+/// there), and a search that also moves the height marks its choice as lower than the
+/// landscape, drawn on the landscape's axes rather than clipped onto the unreachable row.
+#[test]
+fn the_optimisation_plot_says_when_the_lines_coincide_and_when_the_choice_is_off_the_landscape() {
+    let words = |sets: &[&str], name: &str| {
+        let dir = temp(name);
+        let mut args = vec!["report", "configs/default.toml", "--out", dir.to_str().unwrap(), "--cycles", "5"];
+        for s in sets {
+            args.extend(["--set", s]);
+        }
+        let out = gaitlab(&args);
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        let svg = read(&dir, "plots/optimisation.svg");
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let words: Vec<String> = doc.descendants().filter_map(|n| n.text()).map(|t| t.trim().to_string()).collect();
+        std::fs::remove_dir_all(dir).unwrap();
+        words
+    };
+    // The shipped walk: the thesis search keeps the fixed rule on every costed step.
+    let thesis = words(&[], "opt_thesis");
+    assert!(thesis.iter().any(|w| w.starts_with("cost per step (fixed rule kept on all ")), "{thesis:?}");
+    assert!(thesis.iter().any(|w| w == "chosen"), "{thesis:?}");
+    // The joint search lowers the double support below the landscape's height.
+    let joint = words(&["optimiser.method=joint"], "opt_joint");
+    assert!(joint.iter().any(|w| w == "cost per step"), "{joint:?}");
+    let lower = joint.iter().find(|w| w.starts_with("chosen, ")).expect("the chosen point's label");
+    let cm: f64 = lower.trim_start_matches("chosen, ").trim_end_matches(" cm lower").parse().unwrap();
+    assert!(cm > 0.5, "{lower}");
+}

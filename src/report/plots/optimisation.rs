@@ -40,8 +40,17 @@ fn landscape<DB: DrawingBackend>(
     let (lo, hi) = problem.range;
     let (x_from, x_to, land) = zoom_to_feasible(problem, gait);
     let feasible: Vec<(f64, f64)> = land.iter().filter_map(|c| c.cost.map(|k| ((c.x - lo) * 100.0, k))).collect();
+    // The landscape is at the planned height; a search that also moves the height (joint)
+    // can choose a point below all of it, or outside the zoomed band: the axes take it in,
+    // so it is not drawn clipped onto the row of unreachable marks.
+    let chosen = plan.optimisation.chosen;
+    let chosen_point: Vec<(f64, f64)> = chosen.cost.map(|c| ((chosen.x - lo) * 100.0, c)).into_iter().collect();
+    let (x_from, x_to) = match chosen.cost {
+        Some(_) => (x_from.min(chosen.x), x_to.max(chosen.x)),
+        None => (x_from, x_to),
+    };
     let x_axis = (x_from - lo) * 100.0..((x_to - lo) * 100.0).max((x_from - lo) * 100.0 + 1e-6);
-    let y = y_range(&[feasible.as_slice()]);
+    let y = y_range(&[feasible.as_slice(), chosen_point.as_slice()]);
     let zoomed = if (x_from, x_to) == (lo, hi) { String::new() } else { " (feasible band)".to_string() };
     let mut chart = ChartBuilder::on(area)
         .caption(format!("cost landscape, step {}{zoomed}", plan.step), (FONT, 30))
@@ -70,15 +79,14 @@ fn landscape<DB: DrawingBackend>(
         .map_err(err)?
         .label("unreachable")
         .legend(|(x, y)| Cross::new((x + 10, y), 5, BLACK.stroke_width(2)));
-    if let Some(cost) = plan.optimisation.chosen.cost {
+    if let Some(&point) = chosen_point.first() {
+        let lowered_cm = (problem.ds.y - chosen.y) * 100.0;
+        let label =
+            if lowered_cm.abs() < 0.05 { "chosen".to_string() } else { format!("chosen, {lowered_cm:.1} cm lower") };
         chart
-            .draw_series(std::iter::once(TriangleMarker::new(
-                ((plan.optimisation.chosen.x - lo) * 100.0, cost),
-                12,
-                LEFT.filled(),
-            )))
+            .draw_series(std::iter::once(TriangleMarker::new(point, 12, LEFT.filled())))
             .map_err(err)?
-            .label("chosen")
+            .label(label)
             .legend(|(x, y)| TriangleMarker::new((x + 10, y), 8, LEFT.filled()));
     }
     draw_legend(&mut chart, 20, None)?;
@@ -145,7 +153,8 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
     // rule's line looks missing.
     let caption = match kept_fixed_rule(plans) {
         (0, _) => "cost per step".to_string(),
-        (kept, costed) => format!("cost per step (fixed rule kept on {kept} of {costed}: lines coincide)"),
+        (kept, costed) if kept == costed => format!("cost per step (fixed rule kept on all {costed}: lines coincide)"),
+        (kept, costed) => format!("cost per step (fixed rule kept on {kept} of {costed})"),
     };
     let mut chart = ChartBuilder::on(area)
         .caption(caption, (FONT, 28))
