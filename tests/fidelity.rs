@@ -28,21 +28,25 @@ type Bounds = [(f64, f64); 3];
 #[test]
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // Measured (hip against the anatomical pelvis, foot flat at 6 %): hip 5.75 / 0.993,
-        // knee 10.25 / 0.978, ankle 4.34 / 0.951.
-        ("configs/default.toml", &[], [(6.2, 0.985), (10.8, 0.97), (4.8, 0.94)]),
-        // 3.54 / 0.989, 7.40 / 0.972, 2.94 / 0.948.
-        ("configs/stroll.toml", &[], [(4.0, 0.98), (7.9, 0.965), (3.4, 0.94)]),
-        // 9.10 / 0.997, 15.39 / 0.974, 8.24 / 0.896 (1.75 m/s against 1.245 m/s norms).
-        ("configs/brisk.toml", &[], [(9.6, 0.99), (15.9, 0.965), (8.7, 0.885)]),
-        // 3.36 / 0.987, 7.61 / 0.962, 3.38 / 0.934.
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.9, 0.98), (8.1, 0.955), (3.9, 0.925)]),
-        // 3.80 / 0.991, 7.29 / 0.978, 2.73 / 0.957.
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(4.3, 0.985), (7.8, 0.97), (3.2, 0.95)]),
-        // 5.75 / 0.993, 10.25 / 0.978, 4.34 / 0.951.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(6.2, 0.985), (10.8, 0.97), (4.8, 0.94)]),
-        // 8.02 / 0.997, 13.76 / 0.972, 6.99 / 0.910.
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(8.5, 0.99), (14.3, 0.965), (7.5, 0.9)]),
+        // Measured in session 11, once the swing ankle lifts the toe (before it, the heel was
+        // raised instead: hip 5.89 / 0.992, knee 10.70 / 0.975, ankle 4.18 / 0.959): hip
+        // 5.34 / 0.991, knee 10.23 / 0.971, ankle 3.88 / 0.984.
+        ("configs/default.toml", &[], [(5.7, 0.985), (10.6, 0.965), (4.2, 0.975)]),
+        // 3.07 / 0.991, 6.60 / 0.978, 2.79 / 0.971 (before: 3.41 / 0.989, 7.01 / 0.975,
+        // 2.65 / 0.955).
+        ("configs/stroll.toml", &[], [(3.5, 0.985), (7.0, 0.97), (3.2, 0.96)]),
+        // 8.30 / 0.994, 15.15 / 0.961, 7.41 / 0.921 (1.75 m/s against 1.245 m/s norms; before:
+        // 9.22 / 0.996, 15.87 / 0.971, 8.11 / 0.900: the swing knee nearer the norm, its
+        // over-flexed loading response now the larger share of the shape's misfit).
+        ("configs/brisk.toml", &[], [(8.7, 0.99), (15.6, 0.955), (7.8, 0.91)]),
+        // 3.01 / 0.988, 6.80 / 0.970, 3.25 / 0.951.
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.4, 0.98), (7.2, 0.965), (3.7, 0.94)]),
+        // 3.50 / 0.992, 7.25 / 0.981, 2.76 / 0.980.
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.9, 0.985), (7.7, 0.975), (3.2, 0.97)]),
+        // 5.34 / 0.991, 10.23 / 0.971, 3.88 / 0.984.
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(5.7, 0.985), (10.6, 0.965), (4.2, 0.975)]),
+        // 7.30 / 0.994, 13.60 / 0.963, 6.31 / 0.940.
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(7.7, 0.99), (14.0, 0.955), (6.7, 0.93)]),
     ];
     for (config, sets, bounds) in cases {
         let c = compare(config, sets);

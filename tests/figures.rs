@@ -133,9 +133,11 @@ fn the_swing_foot_rises_over_a_step_up_and_drops_over_a_step_down() {
     let heel = |walk: &str| column(&csv, &format!("{walk}_heel_cm"), None);
     let (flat, up, down) = (heel("flat"), heel("up"), heel("down"));
     assert_eq!(flat.len(), 101);
-    // The default step is 15 cm: the step-up curve clears the flat one by about that much
-    // and lands on the step; the step-down one lands 15 cm below where it left.
-    assert!(max(&up) > max(&flat) + 10.0, "up {:.1} flat {:.1}", max(&up), max(&flat));
+    // The default step is 15 cm: the step-up curve clears the flat one by half that or more
+    // and lands on the step (the ankle lifts the toe over the nosing by up to 7° of
+    // dorsiflexion before the heel is raised: 8.1 cm higher, 31.4 against 23.3; heel-first it
+    // was more than 10); the step-down one lands 15 cm below where it left.
+    assert!(max(&up) > max(&flat) + 7.5, "up {:.1} flat {:.1}", max(&up), max(&flat));
     assert!((up[100] - flat[100] - 15.0).abs() < 1.0, "lands {:.1} cm up", up[100] - flat[100]);
     assert!((down[100] - flat[100] + 15.0).abs() < 1.0, "lands {:.1} cm down", flat[100] - down[100]);
     assert!(flat[100].abs() < 1.0 && min(&flat) > -0.5, "the flat swing lands where it left: {:.2}", flat[100]);

@@ -199,6 +199,16 @@ fn slopes_keep_feet_on_and_above_the_ground() {
     }
 }
 
+/// How much faster than in the steady walks before and after a joint may move after a live
+/// change to 1.45 m/s. The first swing after the speed-up starts from a hip 4° more extended
+/// (its stance kept the old toe-off while the pelvis took the new pace; the foot leaves 2.6 cm
+/// further behind it) and reaches the same flexion in the same 24 frames, so the thigh swings
+/// faster: 3.74 against the steady 1.45 m/s walk's 3.35°/frame, 1.12x (1.145x at the worst
+/// moment of the cycle). Before the swing ankle lifted the toe (the swing simulation raised the
+/// heel instead) it was 4.20 against 3.84, 1.09x: the transition is slower than it was, the
+/// steady walk slower still. The jerk keeps its 1.1x.
+const LIVE_SPEED_RATIO: f64 = 1.15;
+
 #[test]
 fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
     let fps = 60.0;
@@ -244,10 +254,9 @@ fn changing_parameters_mid_walk_does_not_jerk_any_joint() {
                 changed_jerk[i],
                 usual_jerk[i]
             );
-            // ...and no joint faster than in either walk by more than a tenth: the knee at
-            // the next heel strike is the fastest, 7.9 against 7.6°/frame.
+            // ...and no joint much faster than in either walk (see LIVE_SPEED_RATIO).
             assert!(
-                changed[i] <= usual[i] * 1.1,
+                changed[i] <= usual[i] * LIVE_SPEED_RATIO,
                 "joint {i}: {:.3}°/frame after a change at {change_at} vs usual {:.3}",
                 changed[i],
                 usual[i]
@@ -322,7 +331,8 @@ fn long_frames_are_split_and_no_phase_end_is_skipped() {
 /// cycle's hip heights with this cycle's curve; now a live change of obliquity or tilt guards
 /// the swinging leg's landing again and the guard sees the next cycle's curve. Measured
 /// since: no failure at any of the 66 changes; worst joint speed 1.09x, jerk 1.04x the
-/// steady walks' (limit 1.1x, as the fixed-moment test above).
+/// steady walks' (limit 1.1x, as the fixed-moment test above); with the swing ankle lifting
+/// the toe, 1.145x and 1.06x (the speed limit is [`LIVE_SPEED_RATIO`]).
 #[test]
 fn a_live_change_at_any_moment_of_the_cycle_keeps_every_foot_planted_and_reached() {
     let fps = 60.0;
@@ -371,7 +381,11 @@ fn a_live_change_at_any_moment_of_the_cycle_keeps_every_foot_planted_and_reached
         let speed_ratio = (0..4).map(|i| speed[i] / usual[i]).fold(0.0, f64::max);
         let jerk_ratio = (0..4).map(|i| jerk[i] / usual_jerk[i]).fold(0.0, f64::max);
         worst = [worst[0].max(speed_ratio), worst[1].max(jerk_ratio)];
-        if checks.foot_skate_mm >= 0.5 || checks.reach_failures > 0 || speed_ratio > 1.1 || jerk_ratio > 1.1 {
+        if checks.foot_skate_mm >= 0.5
+            || checks.reach_failures > 0
+            || speed_ratio > LIVE_SPEED_RATIO
+            || jerk_ratio > 1.1
+        {
             failures.push((change_at, checks.foot_skate_mm, checks.reach_failures, speed_ratio, jerk_ratio));
         }
     }
