@@ -438,6 +438,7 @@ impl Walker {
                 leg.cycle_start += 1.0;
                 leg.phase = next;
                 self.pace_at_heel_strike(at);
+                self.restore_phase_bounds(at);
             }
         }
         self.legs[i].phase_serial += 1;
