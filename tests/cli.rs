@@ -145,8 +145,8 @@ fn simulate_writes_the_interface_columns_identically_every_run() {
         "frame,time_s,phase_r,phase_l,support,pelvis_x,pelvis_y,pelvis_z,pelvis_tilt_deg,pelvis_obliquity_deg,pelvis_rotation_deg,hip_flex_r_deg,hip_abd_r_deg,knee_flex_r_deg,ankle_dorsi_r_deg,hip_flex_l_deg,hip_abd_l_deg,knee_flex_l_deg,ankle_dorsi_l_deg,heel_r_x,heel_r_y,heel_r_z,toe_r_x,toe_r_y,toe_r_z,heel_l_x,heel_l_y,heel_l_z,toe_l_x,toe_l_y,toe_l_z,shoulder_flex_r_deg,elbow_flex_r_deg,shoulder_flex_l_deg,elbow_flex_l_deg,terrain_y_under_heel_r,terrain_y_under_heel_l"
     ));
     let rows: Vec<&str> = lines.collect();
-    // 3 cycles at 50 fps plus the start frame.
-    let cycle_s: f64 = 120.0 / 110.397;
+    // 3 cycles at 50 fps plus the start frame (the default's derived cadence, 119.0874).
+    let cycle_s: f64 = 120.0 / 119.0874;
     assert_eq!(rows.len(), (3.0 * cycle_s * 50.0_f64).round() as usize + 1);
     for row in &rows {
         let cells: Vec<&str> = row.split(',').collect();

@@ -3,13 +3,13 @@
 //!
 //! Measured 2026-11-23 after the calibration (before it, on the default walk: hip r 0.961 /
 //! RMS 11.4°, knee 0.880 / 12.3°, ankle 0.821 / 10.3°, the ankle never below −0.4°). The
-//! issue's targets are r ≥ 0.95 and RMS ≤ 5° (ankle ≤ 4°); shapes (r) meet them for hip and
-//! knee at every speed and for the ankle at 1.0 and 1.3 m/s; RMS for the hip at 0.8 and
-//! 1.0 m/s, for the ankle from 0.8 to 1.0 m/s, and never yet for the knee: its loading
-//! response is too flexed (the
-//! pelvis is held low at double support) and the reference is one speed (1.245 m/s), so
-//! brisk walks are compared with a slower walk's curves. Each bound is the measured value
-//! with a small margin: a change that moves the walk away from the norms fails here.
+//! issue's targets are r ≥ 0.95 and RMS ≤ 5° (ankle ≤ 4°). As of session 11: shapes (r) meet
+//! them for hip and knee at every speed and for the ankle from 1.0 m/s up (0.913 at 0.8);
+//! RMS for the hip from 0.8 to 1.3 m/s, for the ankle at 1.0 and 1.3 m/s, and never yet for
+//! the knee (9.6° at 1.3 m/s): its loading response is too flexed (the pelvis still falls
+//! after heel strike) and the reference is one speed (1.245 m/s), so slower and brisker walks
+//! are compared with another speed's curves. Each bound is the measured value with a small
+//! margin: a change that moves the walk away from the norms fails here.
 
 use gaitlab::normative::{self, Comparison, Reference};
 use std::path::Path;
@@ -28,25 +28,30 @@ type Bounds = [(f64, f64); 3];
 #[test]
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // Measured in session 11, once the swing ankle lifts the toe (before it, the heel was
-        // raised instead: hip 5.89 / 0.992, knee 10.70 / 0.975, ankle 4.18 / 0.959): hip
-        // 5.34 / 0.991, knee 10.23 / 0.971, ankle 3.88 / 0.984.
-        ("configs/default.toml", &[], [(5.7, 0.985), (10.6, 0.965), (4.2, 0.975)]),
-        // 3.07 / 0.991, 6.60 / 0.978, 2.79 / 0.971 (before: 3.41 / 0.989, 7.01 / 0.975,
+        // Measured in session 11 with the norms' walk ratio (0.0055; cadence and stride within
+        // 0.1 SD of the speed norms at 0.8-1.3 m/s, against -1.2 / +1.0 SD before) and the toe
+        // lifted by the ankle in swing. Default 1.3 m/s: hip 4.76 / 0.992, knee 9.64 / 0.975,
+        // ankle 3.39 / 0.983 (before both: 5.89 / 0.992, 10.70 / 0.975, 4.18 / 0.959).
+        ("configs/default.toml", &[], [(5.1, 0.985), (10.0, 0.965), (3.7, 0.975)]),
+        // Slower walks take the norms' shorter step and, as people do, a smaller hip range;
+        // against the one-speed (1.245 m/s) reference that reads as a larger RMS. Stroll:
+        // 4.49 / 0.984, 8.31 / 0.971, 4.03 / 0.932 (before: 3.41 / 0.989, 7.01 / 0.975,
         // 2.65 / 0.955).
-        ("configs/stroll.toml", &[], [(3.5, 0.985), (7.0, 0.97), (3.2, 0.96)]),
-        // 8.30 / 0.994, 15.15 / 0.961, 7.41 / 0.921 (1.75 m/s against 1.245 m/s norms; before:
-        // 9.22 / 0.996, 15.87 / 0.971, 8.11 / 0.900: the swing knee nearer the norm, its
-        // over-flexed loading response now the larger share of the shape's misfit).
-        ("configs/brisk.toml", &[], [(8.7, 0.99), (15.6, 0.955), (7.8, 0.91)]),
-        // 3.01 / 0.988, 6.80 / 0.970, 3.25 / 0.951.
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.4, 0.98), (7.2, 0.965), (3.7, 0.94)]),
-        // 3.50 / 0.992, 7.25 / 0.981, 2.76 / 0.980.
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.9, 0.985), (7.7, 0.975), (3.2, 0.97)]),
-        // 5.34 / 0.991, 10.23 / 0.971, 3.88 / 0.984.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(5.7, 0.985), (10.6, 0.965), (4.2, 0.975)]),
-        // 7.30 / 0.994, 13.60 / 0.963, 6.31 / 0.940.
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(7.7, 0.99), (14.0, 0.955), (6.7, 0.93)]),
+        ("configs/stroll.toml", &[], [(4.9, 0.98), (8.7, 0.965), (4.4, 0.925)]),
+        // 7.16 / 0.996, 14.15 / 0.973, 6.41 / 0.928 (1.75 m/s against 1.245 m/s norms; before:
+        // 9.22 / 0.996, 15.87 / 0.971, 8.11 / 0.900).
+        ("configs/brisk.toml", &[], [(7.6, 0.99), (14.6, 0.965), (6.8, 0.92)]),
+        // 4.40 / 0.981, 8.06 / 0.968, 4.37 / 0.913 (before: 3.25 / 0.987, 7.13 / 0.967,
+        // 3.09 / 0.939).
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(4.8, 0.975), (8.5, 0.96), (4.8, 0.905)]),
+        // 3.84 / 0.990, 8.51 / 0.971, 3.59 / 0.962 (before: 3.91 / 0.991, 7.67 / 0.979,
+        // 2.72 / 0.962).
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(4.2, 0.985), (8.9, 0.965), (4.0, 0.955)]),
+        // 4.76 / 0.992, 9.64 / 0.975, 3.39 / 0.983.
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(5.1, 0.985), (10.0, 0.965), (3.7, 0.975)]),
+        // 6.66 / 0.993, 12.81 / 0.978, 5.14 / 0.972 (before: 8.14 / 0.996, 14.26 / 0.971,
+        // 6.88 / 0.914).
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(7.1, 0.99), (13.2, 0.97), (5.5, 0.965)]),
     ];
     for (config, sets, bounds) in cases {
         let c = compare(config, sets);
@@ -93,7 +98,9 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // 1.6 m/s, lateral 6.9 cm falling to 3.8 cm. Measured 2026-11-23: vertical 1.07 / 1.89 /
     // 3.46 / 4.46 cm, lateral 6.90 / 5.87 / 4.84 / 3.80 cm at 0.7 / 1.0 / 1.3 / 1.6 m/s — the
     // trends and the lateral values hold; vertically the slow walks sway too little (the
-    // reach guard lowers the mid-stance key of their short steps).
+    // reach guard lowers the mid-stance key of their short steps). Session 11, with the
+    // norms' shorter step the guard no longer lowers the fast walks' keys either: vertical
+    // 1.07 / 1.88 / 2.80 / 3.50 cm, as set (2.33 cm per m/s above 1.3 m/s).
     let mut previous: Option<(f64, f64)> = None;
     for speed in [0.7, 1.0, 1.3, 1.6] {
         let set = format!("walk.speed_mps={speed}");

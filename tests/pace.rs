@@ -14,7 +14,7 @@ use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::frame::Frame;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::model::walk::pace::WalkState;
-use pace_common::{at_time, heel_strikes, max_pelvis_velocity_jump, walk};
+use pace_common::{Peaks, at_time, heel_strikes, max_pelvis_velocity_jump, steady_peaks, walk};
 
 fn preset(name: &str) -> WalkParams {
     presets::params(name).unwrap().unwrap()
@@ -77,11 +77,9 @@ fn a_stop_ends_at_rest_with_both_feet_down_on_flat_stairs_and_slope() {
 #[test]
 fn stopping_moves_no_joint_faster_or_jerkier_than_the_steady_walk() {
     for name in STOPPING {
-        let (steady, _) = walk(&preset(name), 8.0, FPS);
-        let steady = &steady[60..];
+        let Peaks { speed: usual, jerk: usual_jerk, pelvis: usual_pelvis } = steady_peaks(&preset(name), 8.0, FPS);
         let (frames, _) = stopping(name);
         let transition = &frames[170..];
-        let (usual, usual_jerk) = (max_steps(steady), max_speed_changes(steady));
         let (seen, seen_jerk) = (max_steps(transition), max_speed_changes(transition));
         for i in 0..4 {
             assert!(seen[i] <= usual[i] * 1.2, "{name} joint {i}: {:.2}°/frame vs {:.2} steady", seen[i], usual[i]);
@@ -92,8 +90,7 @@ fn stopping_moves_no_joint_faster_or_jerkier_than_the_steady_walk() {
                 usual_jerk[i]
             );
         }
-        let (usual_pelvis, seen_pelvis) =
-            (max_pelvis_velocity_jump(steady, FPS), max_pelvis_velocity_jump(transition, FPS));
+        let seen_pelvis = max_pelvis_velocity_jump(transition, FPS);
         assert!(seen_pelvis <= usual_pelvis * 1.2, "{name}: pelvis {seen_pelvis:.3} vs {usual_pelvis:.3} m/s a frame");
     }
 }
@@ -139,7 +136,10 @@ fn a_scheduled_walk_reaches_each_plateau_within_two_steps() {
 /// (hip and knee), the pelvis's velocity change per frame 1.11x: inside the 1.2x.
 /// Before the cadence blended over a whole cycle on a Hermite handing its slope on
 /// (`CADENCE_BLEND_CYCLES`): 1.32x, 1.38x and 1.47x; before a ramp's mid-stance key was
-/// passed halfway to the coming step's pace, pelvis 1.19x.
+/// passed halfway to the coming step's pace, pelvis 1.19x. Session 11 (the norms' shorter
+/// step, the mid-stance key passed at the coming step's pace, the double support sunk by the
+/// coming step's vertical range, the steady walks read at eight sampling phases): joint
+/// speed 1.02x, jerk 1.15x (knee), pelvis 1.125x.
 #[test]
 fn pace_changes_keep_joints_and_pelvis_near_the_steady_walks() {
     let (frames, _) = walk(&scheduled(), 14.0, FPS);
@@ -149,13 +149,12 @@ fn pace_changes_keep_joints_and_pelvis_near_the_steady_walks() {
     for speed in [0.8, 1.0, 1.6] {
         let mut p = preset("default");
         p.walk.speed_mps = speed;
-        let (steady, _) = walk(&p, 8.0, FPS);
-        let steady = &steady[60..];
+        let steady = steady_peaks(&p, 8.0, FPS);
         for i in 0..4 {
-            usual[i] = usual[i].max(max_steps(steady)[i]);
-            usual_jerk[i] = usual_jerk[i].max(max_speed_changes(steady)[i]);
+            usual[i] = usual[i].max(steady.speed[i]);
+            usual_jerk[i] = usual_jerk[i].max(steady.jerk[i]);
         }
-        usual_pelvis = usual_pelvis.max(max_pelvis_velocity_jump(steady, FPS));
+        usual_pelvis = usual_pelvis.max(steady.pelvis);
     }
     let (seen, seen_jerk) = (max_steps(&frames), max_speed_changes(&frames));
     for i in 0..4 {

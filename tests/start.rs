@@ -14,7 +14,7 @@ use gaitlab::model::walk::Walker;
 use gaitlab::model::walk::frame::Frame;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::model::walk::pace::WalkState;
-use pace_common::{at_time, heel_strikes, max_pelvis_velocity_jump, walk};
+use pace_common::{Peaks, at_time, heel_strikes, max_pelvis_velocity_jump, steady_peaks, walk};
 
 const FPS: f64 = 60.0;
 
@@ -31,13 +31,13 @@ fn e_first_step(w: &Walker) -> f64 {
     w.pace_events().iter().find(|e| e.kind.name() == "first_step").unwrap().time_s
 }
 
-/// Steady walk of `name` at `speed` for 8 s, its first second left out.
-fn steady(name: &str, speed: Option<f64>) -> Vec<Frame> {
+/// The preset `name`, at `speed` if given.
+fn steady(name: &str, speed: Option<f64>) -> WalkParams {
     let mut p = presets::params(name).unwrap().unwrap();
     if let Some(v) = speed {
         p.walk.speed_mps = v;
     }
-    walk(&p, 8.0, FPS).0.split_off(60)
+    p
 }
 
 const TERRAINS: [&str; 3] = ["default", "stairs_up", "slope_up"];
@@ -142,7 +142,8 @@ fn the_first_step_is_short_and_the_walk_is_steady_from_the_second() {
 }
 
 /// Measured: joint speed at most 1.08x the steady walk's largest, joint jerk 1.14x, pelvis
-/// velocity change per frame 1.10x, at 0.8 to 1.6 m/s, on stairs and on a slope.
+/// velocity change per frame 1.10x, at 0.8 to 1.6 m/s, on stairs and on a slope; in session
+/// 11, against the steady walk at eight sampling phases, 1.08x, 1.12x and 1.13x.
 #[test]
 fn starting_moves_no_joint_faster_or_jerkier_than_the_steady_walk() {
     let cases: Vec<(&str, Option<f64>)> = [0.8, 1.0, 1.3, 1.6]
@@ -157,8 +158,8 @@ fn starting_moves_no_joint_faster_or_jerkier_than_the_steady_walk() {
         }
         p.schedule.truncate(1);
         let (frames, _) = walk(&p, 5.0, FPS);
-        let usual_frames = steady(name, speed);
-        let (usual, usual_jerk) = (max_steps(&usual_frames), max_speed_changes(&usual_frames));
+        let Peaks { speed: usual, jerk: usual_jerk, pelvis: usual_pelvis } =
+            steady_peaks(&steady(name, speed), 8.0, FPS);
         let (seen, seen_jerk) = (max_steps(&frames), max_speed_changes(&frames));
         for i in 0..4 {
             assert!(seen[i] <= usual[i] * 1.2, "{name} {speed:?} joint {i}: {:.2} vs {:.2}°/frame", seen[i], usual[i]);
@@ -169,8 +170,7 @@ fn starting_moves_no_joint_faster_or_jerkier_than_the_steady_walk() {
                 usual_jerk[i]
             );
         }
-        let (pelvis, usual_pelvis) =
-            (max_pelvis_velocity_jump(&frames, FPS), max_pelvis_velocity_jump(&usual_frames, FPS));
+        let pelvis = max_pelvis_velocity_jump(&frames, FPS);
         assert!(pelvis <= usual_pelvis * 1.2, "{name} {speed:?}: pelvis {pelvis:.3} vs {usual_pelvis:.3}");
     }
 }

@@ -12,12 +12,12 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// 0.8 m/s, 1.6 from 6 s, 1.0 from 12 s, a stop at 18 s: plateaus long enough for whole
-/// gait cycles, then about 2.5 s standing.
+/// gait cycles, then about 3 s standing (18 cycles of the first speed's, 1.285 s).
 const SCHEDULED: &str = "[walk]\nspeed_mps = 0.8\n\n\
     [[walk.schedule]]\ntime_s = 6.0\nspeed_mps = 1.6\n\n\
     [[walk.schedule]]\ntime_s = 12.0\nspeed_mps = 1.0\n\n\
     [[walk.schedule]]\ntime_s = 18.0\nstop = true\n";
-const CYCLES: u32 = 16;
+const CYCLES: u32 = 18;
 const ASKED: [f64; 3] = [0.8, 1.6, 1.0];
 
 fn temp(name: &str) -> PathBuf {

@@ -469,24 +469,31 @@ pub struct Resolved {
     pub ik: IkSettings,
 }
 
-/// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body;
-/// Sekiya & Nagasaki 1998 report 0.0064 for men, nearly constant across speeds. Scaled with
-/// height.
-pub(crate) const WALK_RATIO_PER_175: f64 = 0.0064;
+/// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body,
+/// scaled with height. Sekiya & Nagasaki 1998 found it nearly constant across speeds; the
+/// value is the normative walk's own (data/normative/spatiotemporal_by_speed.csv: 0.0054 to
+/// 0.0056 at all six treadmill speeds), taken as it is for the 1.75 m body, so that cadence
+/// and stride sit on the norms at every speed and the joint curves are compared with a walk
+/// of the norms' step. Sekiya's 0.0064 (men, overground) took 1.3 m/s to 110.5 steps/min and
+/// a 1.41 m stride, 1.2 SD below the norms' cadence: the longer step held the pelvis low at
+/// double support and flexed the loading knee 14 deg past the norm.
+pub(crate) const WALK_RATIO_PER_175: f64 = 0.0055;
 
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):
     ///
     /// - cadence = √(60·v / r) steps/min and stride = 2·r·cadence, with the walk ratio
-    ///   r = 0.0064·H/1.75 (Sekiya & Nagasaki): 1.3 m/s gives 110 steps/min and 1.41 m;
+    ///   r = 0.0055·H/1.75 (the norms', [`WALK_RATIO_PER_175`]): 1.3 m/s gives 119 steps/min
+    ///   and 1.31 m;
     ///   a set stride or cadence takes the other from v = stride·cadence/120;
     /// - step width 0.10 m at 1.3 m/s, 2 cm narrower per 1 m/s faster (≥ 0.05 m);
     /// - toe-off at 0.62 of the cycle at 1.3 m/s, 0.04 earlier per 1 m/s faster (double
     ///   support shrinks with speed);
-    /// - pelvis after Orendurff et al. 2004's speed trends: vertical range 1.9 cm at 0.7 m/s
-    ///   rising 1.5 cm per m/s (2.8 cm at 1.3 m/s: the hip joint's range in this leg
-    ///   geometry; Orendurff's centre-of-mass range, 2.7 + 2.33 cm per m/s, would flex the
-    ///   loading knee to 35°, twice the 15–20° of normal gait), lateral range 6.9 cm at
+    /// - pelvis after Orendurff et al. 2004's speed trends: vertical range 2.8 cm at 1.3 m/s
+    ///   (the hip joint's range in this leg geometry; Orendurff's centre-of-mass range there,
+    ///   4.1 cm, would flex the loading knee to 35°, twice the 15–20° of normal gait), rising
+    ///   with Orendurff's 2.33 cm per m/s above it and 1.5 below (1.9 cm at 0.7 m/s; the slow
+    ///   walk's reach guard walks less anyway), lateral range 6.9 cm at
     ///   0.7 m/s falling 3.44 cm per m/s (×sway);
     ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
     /// - mid-stance drop 1.5 cm at 1.3 m/s, 2 cm more per m/s faster, so long fast steps still
@@ -539,7 +546,8 @@ impl WalkParams {
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
             tilt_range: deg(p.tilt_range_deg),
-            vertical_range: p.vertical_range_cm.unwrap_or(1.9 + 1.5 * (v - 0.7)).max(0.0) / 100.0,
+            vertical_range: p.vertical_range_cm.unwrap_or((1.9 + 1.5 * (v - 0.7)).max(2.8 + 2.33 * fast)).max(0.0)
+                / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or((1.5 + 2.0 * fast).max(0.5)) / 100.0,
             midstance_offset: p.midstance_offset_cm / 100.0,
@@ -568,8 +576,9 @@ mod tests {
     fn default_speed_gives_normal_adult_figures() {
         let r = WalkParams::default().resolve();
         let cadence = 120.0 / r.cycle_s;
-        assert!((cadence - 110.4).abs() < 0.5, "{cadence}");
-        assert!((r.stride_m - 1.413).abs() < 0.01, "{}", r.stride_m);
+        // The norms at 1.3 m/s: 118.5 +- 6.5 steps/min, stride 1.315 +- 0.126 m.
+        assert!((cadence - 119.1).abs() < 0.5, "{cadence}");
+        assert!((r.stride_m - 1.310).abs() < 0.01, "{}", r.stride_m);
         assert!((r.stride_m / r.cycle_s - 1.3).abs() < 1e-9);
         assert!((r.toe_off - 0.62).abs() < 1e-12);
     }

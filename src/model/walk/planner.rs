@@ -189,13 +189,14 @@ impl Walker {
         let ms_after = self.midstance_key(leading, strike_phase);
         let ds = self.double_support_key(trailing, leading, strike_phase, &ms_before, &ms_after);
         self.plan.push(ds);
-        // During a speed change the mid-stance key is passed halfway to the coming ramp step's
-        // pace, so that the speed-up (or slow-down) spreads over the segments either side of
-        // it instead of falling into the one after it: the scheduled 0.8 -> 1.6 -> 1.0 m/s
-        // walk's largest pelvis velocity change per frame 0.111 -> 0.104 m/s (1.19x -> 1.11x
-        // the steady walks'); a quarter of the way gave 0.105, the whole way 0.104.
+        // During a speed change the mid-stance key is passed at the coming ramp step's pace,
+        // so that the speed-up (or slow-down) spreads over the segments either side of it
+        // instead of falling into the one after it. The scheduled 0.8 -> 1.6 -> 1.0 m/s walk's
+        // largest pelvis velocity change per frame: 0.081 m/s passed halfway there, 0.075 at
+        // three quarters, 0.073 the whole way, 0.077 at 1.25 (the steady walks' largest,
+        // 0.064); with the longer 0.0064 walk ratio halfway had been the best, 0.104.
         let pace = match self.coming_ramp() {
-            Some(next) => 0.5 * (ds.pace + next.stride_m),
+            Some(next) => next.stride_m,
             None => ds.pace,
         };
         self.plan.push(PelvisKey { pace, ..ms_after });
@@ -238,10 +239,14 @@ impl Walker {
     ) -> PelvisKey {
         let r = &self.gait.r;
         let ground = trailing.heel.y.min(leading.heel.y);
+        // During a speed-up the double support sinks by the coming ramp step's vertical range
+        // when it is the larger (it grows with speed), as the mid-stance key takes its drop.
+        let vertical_range =
+            self.coming_ramp().map_or(r.vertical_range, |next| next.vertical_range.max(r.vertical_range));
         PelvisKey {
             phase: strike_phase + 0.5 * (r.toe_off - 0.5),
             x: 0.5 * (ms_before.x + ms_after.x),
-            y: ground + r.dims.standing_hip_height() - r.midstance_drop - r.vertical_range,
+            y: ground + r.dims.standing_hip_height() - r.midstance_drop - vertical_range,
             kind: KeyKind::DoubleSupport,
             // This step's own average pace, so a change of speed or a stair spreads over the
             // steps it happens in instead of being caught up within one segment.
@@ -388,11 +393,12 @@ impl Walker {
                         continue;
                     }
                 }
-                // Too close to the ground: clearance ramps in over the first and out over the
-                // last 15 % of the swing, where the foot leaves and meets the ground.
+                // Too close to the ground: clearance ramps in over the first 15 % of the swing
+                // and out over its end, where the foot leaves and meets the ground.
                 let pose = sample.pose.unwrap_or_else(|| solve_leg(r, hip, target));
                 solved[i] = Some(SolvedSample { pose: Some(pose), ..sample });
-                let needed = r.clearance * (s / 0.15).min((1.0 - s) / 0.15).min(1.0);
+                let ramp = |landing: f64| r.clearance * (s / 0.15).min((1.0 - s) / landing).min(1.0);
+                let needed = (ramp(0.15), ramp(TOE_LANDING_RAMP));
                 let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
                 prev_toe_x = pose.toe_tip.x;
                 let (heel_deficit, toe_deficit) = self.clearance_deficits(&pose, ground_toe, needed);
@@ -424,9 +430,15 @@ impl Walker {
     /// How far a swing foot in `pose` is below its clearance (m): the heel's, then the toe's
     /// or sole's (over the ground up to `ground_toe` and any terrain corner under the foot)
     /// with how far ahead of the heel that point is, the lever a dorsiflexion lifts it with.
-    fn clearance_deficits(&self, pose: &LegPose, ground_toe: f64, needed: f64) -> (f64, (f64, f64)) {
+    /// `needed` is the heel's and a corner's clearance, `toe_needed` the toe's over the ground.
+    fn clearance_deficits(
+        &self,
+        pose: &LegPose,
+        ground_toe: f64,
+        (needed, toe_needed): (f64, f64),
+    ) -> (f64, (f64, f64)) {
         let heel_deficit = self.terrain.height(pose.heel.x) + needed - pose.heel.y;
-        let mut toe_deficit = (ground_toe + needed - pose.toe_tip.y, pose.toe_tip.x - pose.heel.x);
+        let mut toe_deficit = (ground_toe + toe_needed - pose.toe_tip.y, pose.toe_tip.x - pose.heel.x);
         for corner in self.terrain.corners_between(pose.heel.x, pose.toe_tip.x) {
             let top = self.terrain.height(corner).max(self.terrain.height(corner - 1e-9));
             let f = (corner - pose.heel.x) / (pose.toe_tip.x - pose.heel.x).max(1e-9);
@@ -438,6 +450,14 @@ impl Walker {
         (heel_deficit, toe_deficit)
     }
 }
+
+/// Share of the swing's end over which the toe's clearance above the ground ramps out (the
+/// heel's and a stair nosing's ramp out over the last 0.15). The toe needs its full clearance
+/// at mid-swing, where the foot passes lowest, not just before the heel lands: held to it
+/// until 0.85 of the swing, a short step whose foot ends pitched toward rising ground (the
+/// closing step of a stop on slope_up) kept its heel 10-15 cm up and dropped it in the last
+/// five frames, the knee extending 9°/frame against the steady walk's 6.6 at the fastest.
+const TOE_LANDING_RAMP: f64 = 0.35;
 
 /// Most dorsiflexion (deg) the swing simulation gives the ankle to clear the ground before
 /// it lifts the heel instead: the normative swing ankle peaks at 5.6 ± 2.0 deg at 86 % of

@@ -27,7 +27,11 @@ pub(super) fn y_range(series: &[&[(f64, f64)]]) -> std::ops::Range<f64> {
     if !lo.is_finite() {
         return 0.0..1.0;
     }
-    let pad = ((hi - lo) * 0.1).max(1e-3);
+    // A flat series (one feasible candidate, or every step at the same cost) still gets an
+    // axis of readable ticks: padded by a thousandth of a range its labels' last digits would
+    // be all that differs (2111.71, 2111.72, ... crowding the axis title).
+    let flat = (hi - lo) < 1e-3 * lo.abs().max(hi.abs());
+    let pad = if flat { 5e-3 * lo.abs().max(hi.abs()) } else { ((hi - lo) * 0.1).max(1e-3) };
     (lo - pad)..(hi + pad)
 }
 
@@ -155,5 +159,18 @@ mod tests {
         // Points in every corner but the lower left.
         let three = [(99.0, 0.99), (1.0, 0.99), (99.0, 0.01)];
         assert_eq!(corner(&three), SeriesLabelPosition::LowerLeft);
+    }
+
+    #[test]
+    fn a_flat_series_gets_an_axis_of_distinct_ticks_and_others_keep_their_zoom() {
+        // Every step at one cost: 1 % of the value around it, not a few hundredths.
+        let flat = [(1.0, 2111.719), (2.0, 2111.72), (3.0, 2111.721)];
+        let r = y_range(&[&flat]);
+        assert!(r.end - r.start > 20.0 && r.contains(&2111.72), "{r:?}");
+        // A 13-unit valley in a cost near 1950 keeps its 10 % padding.
+        let valley = [(0.0, 1955.0), (1.0, 1942.0)];
+        let r = y_range(&[&valley]);
+        assert!((r.start - 1940.7).abs() < 1e-9 && (r.end - 1956.3).abs() < 1e-9, "{r:?}");
+        assert_eq!(y_range(&[&[]]), 0.0..1.0);
     }
 }
