@@ -483,7 +483,8 @@ impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):
     ///
     /// - cadence = √(60·v / r) steps/min and stride = 2·r·cadence, with the walk ratio
-    ///   r = 0.0055·H/1.75 (the norms', [`WALK_RATIO_PER_175`]): 1.3 m/s gives 119 steps/min
+    ///   r = 0.0055·H/1.75 (the normative walk's own, 0.0054–0.0056 at every treadmill speed of
+    ///   `data/normative/spatiotemporal_by_speed.csv`): 1.3 m/s gives 119 steps/min
     ///   and 1.31 m;
     ///   a set stride or cadence takes the other from v = stride·cadence/120;
     /// - step width 0.10 m at 1.3 m/s, 2 cm narrower per 1 m/s faster (≥ 0.05 m);
