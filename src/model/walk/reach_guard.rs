@@ -108,14 +108,15 @@ impl Walker {
             }
         }
         // From the end of the swing (when a plan is given: the knee is nearly straight there
-        // too) through loading response and midstance. Samples are densest around heel
-        // strike, where the leg is straightest.
+        // too) through loading response and midstance, which lasts to heel rise: past the
+        // mid-stance key when the toe-off is early (brisk walks), where the hip has moved on
+        // and the leg is straightest. Samples are densest around heel strike.
         let mut samples: Vec<f64> = Vec::with_capacity(19);
         if with_swing {
             samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
         }
         samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
-        let window_end = strike_phase + r.heel_rise.min(0.5 * r.toe_off);
+        let window_end = strike_phase + r.heel_rise;
         samples.extend(
             (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
         );
