@@ -145,8 +145,7 @@ impl CurveName {
             // Thesis fig 6.5's shape (slow lift first, faster later), its values the foot–floor
             // angle of the normative walk (data/normative/, through this leg chain: 4° at 40 %,
             // 14° at opposite heel strike, 58° at toe-off, for a 1.25 m stride), drawn for a
-            // 1.8 m stride and scaled by stride/1.8: the default 1.31 m stride leaves the ground
-            // at 61°.
+            // 1.8 m stride, scaled by stride/1.8: the default's 1.31 m leaves the ground at 61°.
             CurveName::HeelRise => {
                 &[(0.0, 0.0, 10.0), (0.42, 9.5, 40.0), (0.68, 26.5, 110.0), (0.87, 56.8, 190.0), (1.0, 83.4, 170.0)]
             }
