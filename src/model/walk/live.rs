@@ -4,7 +4,7 @@
 //! step takes the new values from the next toe-off.
 
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::params::{Resolved, WalkParams};
+use crate::model::params::WalkParams;
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
 use crate::model::walk::leg::LegPhase;
 use crate::model::walk::upper::ArmHang;
@@ -38,7 +38,10 @@ impl Walker {
             self.pending_traj = Some(traj);
         }
         let mut r = r;
-        (r.foot_flat, r.heel_rise, r.toe_off) = self.bounded_phases(&r, phase);
+        let wanted = PhaseBounds { foot_flat: r.foot_flat, heel_rise: r.heel_rise, toe_off: r.toe_off };
+        let bounded = self.bounded_phases(wanted, phase);
+        self.held_phases = (bounded != wanted).then_some(wanted);
+        (r.foot_flat, r.heel_rise, r.toe_off) = (bounded.foot_flat, bounded.heel_rise, bounded.toe_off);
         self.arm_hang = ArmHang::new(&r.dims, r.arm_spread, r.elbow_min_flex);
         if r.ik != self.gait.r.ik {
             for solver in &mut self.leg_solvers {
@@ -58,11 +61,11 @@ impl Walker {
         Ok(true)
     }
 
-    /// `wanted`'s foot-flat, heel-rise and toe-off phases as far as the legs let them be at
-    /// master phase `phase`: a boundary must not jump behind a leg inside the phase it ends,
-    /// and a swinging leg keeps the toe-off its swing is timed from.
-    fn bounded_phases(&self, wanted: &Resolved, phase: f64) -> (f64, f64, f64) {
-        let (mut foot_flat, mut heel_rise, mut toe_off) = (wanted.foot_flat, wanted.heel_rise, wanted.toe_off);
+    /// `wanted` as far as the legs let it be at master phase `phase`: a boundary must not
+    /// jump behind a leg inside the phase it ends, and a swinging leg keeps the toe-off its
+    /// swing is timed from.
+    fn bounded_phases(&self, wanted: PhaseBounds, phase: f64) -> PhaseBounds {
+        let PhaseBounds { mut foot_flat, mut heel_rise, mut toe_off } = wanted;
         for leg in &self.legs {
             let q = phase - leg.cycle_start;
             match leg.phase {
@@ -77,7 +80,7 @@ impl Walker {
                 LegPhase::Swing => toe_off = self.gait.r.toe_off,
             }
         }
-        (foot_flat, heel_rise, toe_off)
+        PhaseBounds { foot_flat, heel_rise, toe_off }
     }
 
     /// At a heel strike (master phase `at`), when no leg swings: the phase boundaries that a
@@ -86,10 +89,11 @@ impl Walker {
     /// while a leg swung kept the old toe-off for the rest of the walk: after 1.3 -> 1.45 m/s
     /// double support stayed at 26.0 % of the cycle against a fresh 1.45 m/s walk's 24.5 %.
     pub(super) fn restore_phase_bounds(&mut self, at: f64) {
-        let wanted = self.params.resolve();
-        let bounded = self.bounded_phases(&wanted, at);
+        let Some(wanted) = self.held_phases else { return };
+        let bounded = self.bounded_phases(wanted, at);
+        self.held_phases = (bounded != wanted).then_some(wanted);
         let r = &mut self.gait.r;
-        (r.foot_flat, r.heel_rise, r.toe_off) = bounded;
+        (r.foot_flat, r.heel_rise, r.toe_off) = (bounded.foot_flat, bounded.heel_rise, bounded.toe_off);
     }
 
     /// Swaps in edited trajectory curves when the pelvis passes a key, so the segment being
@@ -99,4 +103,13 @@ impl Walker {
             self.gait.traj = self.pending_traj.take().expect("checked");
         }
     }
+}
+
+/// The three phase boundaries of a leg's stance (cycle phase): where the foot is flat, where
+/// the heel rises, where the toe leaves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct PhaseBounds {
+    foot_flat: f64,
+    heel_rise: f64,
+    toe_off: f64,
 }

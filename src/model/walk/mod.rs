@@ -46,6 +46,7 @@ use crate::model::terrain::Terrain;
 use gait::{LiveCurves, cycle_targets, trajectory_curves};
 use glam::DVec3;
 use leg::{Footfall, LegPhase, LegPose, LegState, LegTarget};
+use live::PhaseBounds;
 use pace_state::Pace;
 use pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use pose::build_pose;
@@ -110,6 +111,9 @@ pub struct Walker {
     gait: Gait,
     terrain: Terrain,
     pending_traj: Option<TrajectoryCurves>,
+    /// The foot-flat, heel-rise and toe-off phases a change asked for and a leg inside its
+    /// phase held back ([`Walker::restore_phase_bounds`] sets them at the next heel strike).
+    held_phases: Option<PhaseBounds>,
     plan: PelvisPlan,
     legs: [LegState; 2],
     phase: f64,
@@ -182,6 +186,7 @@ impl Walker {
             gait: Gait { r, design, traj, live },
             terrain,
             pending_traj: None,
+            held_phases: None,
             plan: PelvisPlan::default(),
             legs,
             phase: 0.0,
