@@ -362,6 +362,8 @@ impl Walker {
         // Only those two are raised: the other curves' values at each sample hold.
         let curves: [SwingCurvesAt; SWING_SAMPLES] = std::array::from_fn(|i| SwingCurvesAt::of(plan, sample_s(i)));
         let mut solved: [Option<SolvedSample>; SWING_SAMPLES] = [None; SWING_SAMPLES];
+        // Until a pass raises the ankle curve, the values read at the start are its values.
+        let mut ankle_raised = false;
         for _pass in 0..8 {
             let mut raised = false;
             let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
@@ -369,7 +371,7 @@ impl Walker {
                 let s = sample_s(i);
                 let hip = hips[i];
                 let heel_height = plan.heel_height.eval(s);
-                let ankle_deg = plan.ankle_deg.eval(s);
+                let ankle_deg = if ankle_raised { plan.ankle_deg.eval(s) } else { curves[i].ankle_deg };
                 let same = |m: &SolvedSample| (m.heel_height, m.ankle_deg) == (heel_height, ankle_deg);
                 let sample = match solved[i] {
                     Some(sample) if same(&sample) => sample,
@@ -411,7 +413,7 @@ impl Walker {
                     let wanted_deg = (toe_deficit.0 / lever).min(1.0).asin().to_degrees() + 0.05;
                     plan.ankle_deg.raise_at(s, wanted_deg.min(room_deg));
                     plan.raises += 1;
-                    raised = true;
+                    (raised, ankle_raised) = (true, true);
                     continue;
                 }
                 let deficit = heel_deficit.max(toe_deficit.0);
