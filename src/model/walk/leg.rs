@@ -177,3 +177,12 @@ pub struct LegState {
 pub fn foot_rotation(yaw: f64, pitch: f64) -> DQuat {
     DQuat::from_rotation_y(yaw) * DQuat::from_rotation_z(pitch)
 }
+
+/// The three phase boundaries of a leg's stance (cycle phase): where the foot is flat, where
+/// the heel rises, where the toe leaves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PhaseBounds {
+    pub(crate) foot_flat: f64,
+    pub(crate) heel_rise: f64,
+    pub(crate) toe_off: f64,
+}

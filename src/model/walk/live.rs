@@ -6,7 +6,7 @@
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::params::WalkParams;
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
-use crate::model::walk::leg::LegPhase;
+use crate::model::walk::leg::{LegPhase, PhaseBounds};
 use crate::model::walk::upper::ArmHang;
 use crate::model::walk::{ModelError, Walker};
 
@@ -103,13 +103,4 @@ impl Walker {
             self.gait.traj = self.pending_traj.take().expect("checked");
         }
     }
-}
-
-/// The three phase boundaries of a leg's stance (cycle phase): where the foot is flat, where
-/// the heel rises, where the toe leaves.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct PhaseBounds {
-    foot_flat: f64,
-    heel_rise: f64,
-    toe_off: f64,
 }

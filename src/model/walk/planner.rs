@@ -404,15 +404,12 @@ impl Walker {
                 let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
                 prev_toe_x = pose.toe_tip.x;
                 let (heel_deficit, toe_deficit) = self.clearance_deficits(&pose, ground_toe, needed);
-                // A toe too close to the ground is lifted by the ankle first, as the tibialis
-                // anterior does in mid-swing, up to SWING_DORSI_MAX_DEG; lifting the heel
-                // instead bends the knee and tips the foot further down.
-                let room_deg = SWING_DORSI_MAX_DEG - ankle_deg;
-                if toe_deficit.0 > heel_deficit.max(1e-5) && room_deg > 0.05 && s > 0.08 && s < 0.985 {
-                    let lever = toe_deficit.1.max(0.05);
-                    let wanted_deg = (toe_deficit.0 / lever).min(1.0).asin().to_degrees() + 0.05;
-                    plan.ankle_deg.raise_at(s, wanted_deg.min(room_deg));
-                    plan.raises += 1;
+                // A toe too close to the ground is lifted by the ankle first.
+                if toe_deficit.0 > heel_deficit.max(1e-5)
+                    && s > 0.08
+                    && s < 0.985
+                    && lift_toe(plan, s, ankle_deg, toe_deficit)
+                {
                     (raised, ankle_raised) = (true, true);
                     continue;
                 }
@@ -451,6 +448,22 @@ impl Walker {
         }
         (heel_deficit, toe_deficit)
     }
+}
+
+/// Raises `plan`'s ankle curve at swing fraction `s` (where the ankle is at `ankle_deg`) by
+/// the dorsiflexion that lifts a toe `deficit.0` m short of its clearance, `deficit.1` m ahead
+/// of the heel, as the tibialis anterior does in mid-swing, up to [`SWING_DORSI_MAX_DEG`]:
+/// lifting the heel instead bends the knee and tips the foot further down. False when the
+/// ankle has no room left.
+fn lift_toe(plan: &mut SwingPlan, s: f64, ankle_deg: f64, (deficit, lever): (f64, f64)) -> bool {
+    let room_deg = SWING_DORSI_MAX_DEG - ankle_deg;
+    if room_deg <= 0.05 {
+        return false;
+    }
+    let wanted_deg = (deficit / lever.max(0.05)).min(1.0).asin().to_degrees() + 0.05;
+    plan.ankle_deg.raise_at(s, wanted_deg.min(room_deg));
+    plan.raises += 1;
+    true
 }
 
 /// Share of the swing's end over which the toe's clearance above the ground ramps out (the
