@@ -28,8 +28,9 @@ pub(super) fn y_range(series: &[&[(f64, f64)]]) -> std::ops::Range<f64> {
         return 0.0..1.0;
     }
     // A flat series (one feasible candidate, or every step at the same cost) still gets an
-    // axis of readable ticks: padded by a thousandth of a range its labels' last digits would
-    // be all that differs (2111.71, 2111.72, ... crowding the axis title).
+    // axis of readable ticks, padded by 0.5 % of its value: padded by a tenth of its own
+    // range, only the labels' last digits differed (2111.71, 2111.72, ... crowding the axis
+    // title).
     let flat = (hi - lo) < 1e-3 * lo.abs().max(hi.abs());
     let pad = if flat { 5e-3 * lo.abs().max(hi.abs()) } else { ((hi - lo) * 0.1).max(1e-3) };
     (lo - pad)..(hi + pad)
