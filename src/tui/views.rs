@@ -68,7 +68,7 @@ pub enum CurveView {
     SwingLateral,
     /// Heel height of the swinging foot (cm): the design and the step's adapted curve.
     SwingHeelHeight,
-    /// Foot pitch through the swing (deg): design and adapted.
+    /// The swinging foot's ankle, against the shank (deg, dorsiflexion +): design and adapted.
     Ankle,
     /// Heel rise (foot–ground angle, deg).
     HeelRise,
@@ -109,7 +109,7 @@ impl CurveView {
             CurveView::SwingForward => "swing foot forward (0-1)",
             CurveView::SwingLateral => "swing foot lateral (0-1)",
             CurveView::SwingHeelHeight => "swing heel height (cm)",
-            CurveView::Ankle => "swing foot pitch (deg)",
+            CurveView::Ankle => "swing ankle, dorsiflexion + (deg)",
             CurveView::HeelRise => "heel rise (deg)",
             CurveView::Shoulder => "shoulder flexion, right (deg)",
             CurveView::Elbow => "elbow flexion, right (deg)",

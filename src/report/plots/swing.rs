@@ -126,18 +126,19 @@ pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks
     root.present().map_err(err)
 }
 
-/// The foot pitch through the swing, each step's as adapted, and the heel-rise curve.
+/// The ankle through the swing (against the shank), each step's as adapted, and the heel-rise
+/// curve.
 pub(super) fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled("Foot pitch through the swing, and heel rise", (FONT, 34)).map_err(err)?;
+    let root = root.titled("Ankle through the swing, and heel rise", (FONT, 34)).map_err(err)?;
     let areas = root.split_evenly((1, 2));
     let design = d.run.gait.design_curves();
     let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_ankle_deg, 1.0)).collect();
     curve_chart(
         &areas[0],
-        "ankle curve (foot pitch)",
+        "ankle curve (foot against the shank)",
         "% of swing",
-        "toe up + (deg)",
+        "dorsiflexion + (deg)",
         &sample(design.get(CurveName::SwingAnkle), 1.0),
         &steps_of(&[(String::new(), &steps)]),
     )?;
