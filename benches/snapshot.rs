@@ -18,10 +18,10 @@ fn snapshot_corpus(c: &mut Criterion) {
 }
 
 fn normative(c: &mut Criterion) {
-    use gaitlab::normative::{self, Reference};
+    use gaitlab::normative::{self, References};
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
     let params = gaitlab::config::load(&path, &[]).unwrap();
-    let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
+    let reference = References::built_in();
     let mut group = c.benchmark_group("normative");
     group.sample_size(10);
     group.bench_function("compare_default_10_cycles", |b| {

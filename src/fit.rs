@@ -14,7 +14,7 @@ use crate::config::cross_check;
 use crate::config::schema::{self, Value};
 use crate::error::Result;
 use crate::model::params::{Resolved, WalkParams};
-use crate::normative::{self, Comparison, Reference};
+use crate::normative::{self, Comparison, References};
 use crate::snapshot::measure;
 use std::path::Path;
 
@@ -138,7 +138,7 @@ pub struct FitResult {
 /// and for keys the config's own cross-key rules reject (each fitted key's range alone does
 /// not keep `legs.heel_rise` 0.05 of a cycle after `legs.foot_flat`: a fit once wrote a config
 /// that `gaitlab check` refused).
-fn cost_of(path: &Path, params: &WalkParams, reference: &Reference) -> (f64, Option<Comparison>) {
+fn cost_of(path: &Path, params: &WalkParams, reference: &References) -> (f64, Option<Comparison>) {
     if !cross_check(params).is_empty() {
         return (f64::INFINITY, None);
     }
@@ -193,7 +193,7 @@ fn written_values(ranges: &[(f64, f64)], u: &[f64]) -> Vec<f64> {
 }
 
 /// Fits `params` (the config at `path`) to `reference`.
-pub fn fit(path: &Path, params: &WalkParams, reference: &Reference, options: FitOptions) -> Result<FitResult> {
+pub fn fit(path: &Path, params: &WalkParams, reference: &References, options: FitOptions) -> Result<FitResult> {
     let mut walked = params.clone();
     walked.sim.cycles = options.cycles.max(*measure::CYCLES.start());
     let r = params.resolve();
@@ -358,7 +358,7 @@ mod tests {
     #[test]
     fn keys_inside_their_ranges_that_the_config_rules_reject_are_never_a_fit() {
         // Both inside FIT_KEYS' ranges, but heel rise only 0.045 of a cycle after foot flat.
-        let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
+        let reference = References::built_in();
         let path = Path::new("default.toml");
         let mut p = WalkParams::default();
         let ranges = ranges(&p);

@@ -1,17 +1,20 @@
 //! A walk against measured human gait: the walk's mean joint curves over the right gait cycle
-//! set beside a normative reference (mean and between-subject SD every 1 % of the cycle).
+//! set beside a normative reference (mean and between-subject SD every 1 % of the cycle) at
+//! the walk's own speed.
 //!
-//! The built-in reference is `data/normative/normative_adult_walking.csv` (Fukuchi, Fukuchi &
-//! Duarte 2018, CC BY 4.0; source, licence and derivation beside it); a user's file with the
-//! same columns can replace it. Pelvic tilt is compared as a shape (both means removed):
-//! the measured tilt carries a ~10° offset that depends on the marker model, the walk's tilt
-//! is a swing about its posture.
+//! The built-in references are `data/normative/joint_angles_by_speed.csv` (Fukuchi, Fukuchi &
+//! Duarte 2018, CC BY 4.0; source, licence and derivation beside it): young adults' treadmill
+//! trials in four speed blocks, 0.80 to 1.59 m/s, read at the walk's speed by linear
+//! interpolation between the two blocks around it. Joint curves change with speed as much as
+//! with anything a config sets (the knee's loading flexion goes from 8° at 0.8 m/s to 20° at
+//! 1.6), so a norm at another speed would blame the walk for the reference's pace. A user's
+//! file with the same columns, one speed block or several, can replace them. Pelvic tilt is
+//! compared as a shape (both means removed): the measured tilt carries a ~10° offset that
+//! depends on the marker model, the walk's tilt is a swing about its posture.
 //!
 //! The walk's cadence and stride are set beside norms for its own speed
 //! (`data/normative/spatiotemporal_by_speed.csv`, the same dataset's treadmill trials at 40–115 %
-//! of comfortable speed), interpolated between the two speed blocks around it: the curves come
-//! at one speed only, but cadence and stride change with speed far more than with anything a
-//! config sets, so a norm at the wrong speed would say little.
+//! of comfortable speed), interpolated the same way.
 
 use crate::analysis::Run;
 use crate::error::{Error, Result};
@@ -20,11 +23,11 @@ use crate::report::metrics::Summary;
 use crate::snapshot::measure;
 use std::path::Path;
 
-/// How the built-in reference is named in tables and files.
-pub const BUILT_IN_SOURCE: &str = "Fukuchi, Fukuchi & Duarte 2018 (24 young adults, treadmill, CC BY 4.0)";
+/// How the built-in references are named in tables and files.
+pub const BUILT_IN_SOURCE: &str = "Fukuchi, Fukuchi & Duarte 2018 (young adults, treadmill, by speed, CC BY 4.0)";
 
-/// The built-in reference's text.
-pub const BUILT_IN: &str = include_str!("../data/normative/normative_adult_walking.csv");
+/// The built-in references' text: four speed blocks, 0.80 to 1.59 m/s.
+pub const BUILT_IN: &str = include_str!("../data/normative/joint_angles_by_speed.csv");
 
 /// How the built-in spatiotemporal norms are named.
 pub const SPEED_NORMS_SOURCE: &str =
@@ -44,18 +47,43 @@ const COMPARED: [(&str, &str, bool); 6] = [
     ("pelvis_rot_fwd", "pelvis_rotation_deg", false),
 ];
 
-/// A normative reference: per curve stem, mean and SD at 0..=100 % of the cycle.
+/// A normative reference at one speed: per curve stem, mean and SD at 0..=100 % of the cycle.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reference {
-    /// The reference's walking speed (m/s), from its `speed_m_s` column.
+    /// The reference's walking speed (m/s): its block's, or the speed it was interpolated at.
     pub speed_mps: f64,
+    /// The speeds of the blocks it came from (m/s), equal when one block was taken.
+    pub blocks_mps: (f64, f64),
     /// (stem, mean, sd), 101 points each.
     pub curves: Vec<(String, Vec<f64>, Vec<f64>)>,
 }
 
 impl Reference {
-    /// Parses the CSV format of the built-in file (`#` comments, a header, one row a percent).
-    pub fn parse(text: &str, label: &str) -> Result<Reference> {
+    /// Where the curves came from, in words, as [`NormsAtSpeed::blocks_used`] says it.
+    #[must_use]
+    pub fn blocks_used(&self, walk_speed_mps: f64) -> String {
+        blocks_used(walk_speed_mps, self.blocks_mps)
+    }
+}
+
+/// Normative references at one or more speeds, slowest first: the built-in file has four
+/// speed blocks (0.80 to 1.59 m/s), a user's file may have one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct References {
+    /// The blocks, speeds strictly rising.
+    pub blocks: Vec<Reference>,
+}
+
+impl References {
+    /// The built-in references, parsed (a test checks that they do).
+    #[must_use]
+    pub fn built_in() -> References {
+        References::parse(BUILT_IN, "built-in reference").expect("the built-in reference parses")
+    }
+
+    /// Parses the built-in file's format: `#` comments, a header, then 101 rows (0 to 100 %
+    /// of the cycle) per speed block, a block's rows sharing their `speed_m_s`, speeds rising.
+    pub fn parse(text: &str, label: &str) -> Result<References> {
         let bad = |line: usize, message: String| Error::Usage(format!("{label}:{line}: {message}"));
         let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'));
         let (header_line, header) = rows.next().ok_or_else(|| bad(1, "no header".into()))?;
@@ -67,24 +95,96 @@ impl Reference {
                 .ok_or_else(|| bad(header_line + 1, format!("no column `{name}` (columns: {})", columns.join(", "))))
         };
         let speed = column("speed_m_s")?;
-        let mut table: Vec<Vec<f64>> = Vec::with_capacity(101);
+        let mut stems = Vec::new();
+        for (stem, _, _) in COMPARED {
+            stems.push((stem, column(&format!("{stem}_mean_deg"))?, column(&format!("{stem}_sd_deg"))?));
+        }
+        // (first line of the block, its rows)
+        let mut tables: Vec<(usize, Vec<Vec<f64>>)> = Vec::new();
         for (n, line) in rows {
             let values: std::result::Result<Vec<f64>, _> = line.split(',').map(|v| v.trim().parse::<f64>()).collect();
             let values = values.map_err(|e| bad(n + 1, format!("not a number: {e}")))?;
             if values.len() != columns.len() || values.iter().any(|v| !v.is_finite()) {
                 return Err(bad(n + 1, format!("expected {} finite numbers", columns.len())));
             }
-            table.push(values);
+            match tables.last_mut() {
+                Some((_, table)) if table[0][speed] == values[speed] => table.push(values),
+                Some((_, table)) if table[0][speed] > values[speed] => {
+                    return Err(bad(n + 1, "speed blocks must come slowest first (speed_m_s rising)".into()));
+                }
+                _ => tables.push((n + 1, vec![values])),
+            }
         }
-        if table.len() != 101 {
-            return Err(bad(header_line + 1, format!("{} rows; expected 101 (0 to 100 % of the cycle)", table.len())));
+        if tables.is_empty() {
+            return Err(bad(header_line + 1, "0 rows; expected 101 (0 to 100 % of the cycle)".into()));
         }
-        let mut curves = Vec::new();
-        for (stem, _, _) in COMPARED {
-            let (m, s) = (column(&format!("{stem}_mean_deg"))?, column(&format!("{stem}_sd_deg"))?);
-            curves.push((stem.to_string(), table.iter().map(|r| r[m]).collect(), table.iter().map(|r| r[s]).collect()));
+        let mut blocks = Vec::new();
+        for (line, table) in tables {
+            if table.len() != 101 {
+                return Err(bad(
+                    line,
+                    format!("{} rows at {} m/s; expected 101 (0 to 100 % of the cycle)", table.len(), table[0][speed]),
+                ));
+            }
+            let curves = stems
+                .iter()
+                .map(|&(stem, m, s)| {
+                    (stem.to_string(), table.iter().map(|r| r[m]).collect(), table.iter().map(|r| r[s]).collect())
+                })
+                .collect();
+            let v = table[0][speed];
+            blocks.push(Reference { speed_mps: v, blocks_mps: (v, v), curves });
         }
-        Ok(Reference { speed_mps: table[0][speed], curves })
+        Ok(References { blocks })
+    }
+
+    /// The reference at `speed_mps`: means and SDs interpolated linearly between the two
+    /// blocks around it, or the end block beyond either end (never extrapolated).
+    #[must_use]
+    pub fn at(&self, speed_mps: f64) -> Reference {
+        let speeds: Vec<f64> = self.blocks.iter().map(|b| b.speed_mps).collect();
+        let (lo, hi, t) = bracket(&speeds, speed_mps);
+        let (a, b) = (&self.blocks[lo], &self.blocks[hi]);
+        let mix = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(x, y)| x + t * (y - x)).collect::<Vec<f64>>();
+        let curves = a
+            .curves
+            .iter()
+            .zip(&b.curves)
+            .map(|((stem, m0, s0), (_, m1, s1))| (stem.clone(), mix(m0, m1), mix(s0, s1)))
+            .collect();
+        Reference {
+            speed_mps: a.speed_mps + t * (b.speed_mps - a.speed_mps),
+            blocks_mps: (a.speed_mps, b.speed_mps),
+            curves,
+        }
+    }
+}
+
+/// Of `speeds` (rising), the two blocks around `speed_mps` and how far between them it is
+/// (0 at the first): the end block twice beyond either end or for NaN.
+fn bracket(speeds: &[f64], speed_mps: f64) -> (usize, usize, f64) {
+    let last = speeds.len() - 1;
+    if speed_mps.is_nan() || speed_mps <= speeds[0] {
+        return (0, 0, 0.0);
+    }
+    if speed_mps >= speeds[last] {
+        return (last, last, 0.0);
+    }
+    let i = speeds.windows(2).position(|w| speed_mps < w[1]).unwrap_or(0);
+    (i, i + 1, (speed_mps - speeds[i]) / (speeds[i + 1] - speeds[i]))
+}
+
+/// Which blocks (`from`, `to` m/s) a norm at `speed_mps` came from, in words: "the 1.232 m/s
+/// block", "interpolated between the 1.232 and 1.417 m/s blocks", or the end block with why.
+fn blocks_used(speed_mps: f64, (from, to): (f64, f64)) -> String {
+    if from < to {
+        format!("interpolated between the {from:.3} and {to:.3} m/s blocks")
+    } else if speed_mps > to + 1e-9 {
+        format!("the fastest block, {to:.3} m/s (the walk is faster; not extrapolated)")
+    } else if speed_mps < from - 1e-9 {
+        format!("the slowest block, {from:.3} m/s (the walk is slower; not extrapolated)")
+    } else {
+        format!("the {from:.3} m/s block")
     }
 }
 
@@ -165,17 +265,9 @@ impl SpeedNorms {
     /// around it, or the end block beyond either end (never extrapolated).
     #[must_use]
     pub fn at(&self, speed_mps: f64) -> NormsAtSpeed {
-        let (first, last) = (self.blocks[0], self.blocks[self.blocks.len() - 1]);
-        let (lo, hi) = if speed_mps.is_nan() || speed_mps <= first.speed_mps {
-            (first, first)
-        } else if speed_mps >= last.speed_mps {
-            (last, last)
-        } else {
-            let i = self.blocks.windows(2).position(|w| speed_mps < w[1].speed_mps).unwrap_or(0);
-            (self.blocks[i], self.blocks[i + 1])
-        };
-        let t =
-            if hi.speed_mps > lo.speed_mps { (speed_mps - lo.speed_mps) / (hi.speed_mps - lo.speed_mps) } else { 0.0 };
+        let speeds: Vec<f64> = self.blocks.iter().map(|b| b.speed_mps).collect();
+        let (lo, hi, t) = bracket(&speeds, speed_mps);
+        let (lo, hi) = (self.blocks[lo], self.blocks[hi]);
         let mix = |a: (f64, f64), b: (f64, f64)| (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
         NormsAtSpeed {
             speed_mps,
@@ -192,15 +284,15 @@ impl NormsAtSpeed {
     /// 1.417 m/s blocks", or "the 1.417 m/s block, the fastest (the walk is faster)".
     #[must_use]
     pub fn blocks_used(&self) -> String {
-        if self.from_block_mps < self.to_block_mps {
-            format!("interpolated between the {:.3} and {:.3} m/s blocks", self.from_block_mps, self.to_block_mps)
-        } else if self.speed_mps > self.to_block_mps + 1e-9 {
-            format!("the fastest block, {:.3} m/s (the walk is faster; not extrapolated)", self.to_block_mps)
-        } else if self.speed_mps < self.from_block_mps - 1e-9 {
-            format!("the slowest block, {:.3} m/s (the walk is slower; not extrapolated)", self.from_block_mps)
-        } else {
-            format!("the {:.3} m/s block", self.from_block_mps)
-        }
+        blocks_used(self.speed_mps, (self.from_block_mps, self.to_block_mps))
+    }
+}
+
+impl Comparison {
+    /// Which speed blocks the reference came from, in words ([`Reference::blocks_used`]).
+    #[must_use]
+    pub fn reference_blocks(&self) -> String {
+        blocks_used(self.speed_mps, self.reference_blocks_mps)
     }
 }
 
@@ -241,8 +333,10 @@ pub struct CurveComparison {
 pub struct Comparison {
     /// The walk's speed (m/s).
     pub speed_mps: f64,
-    /// The reference's speed (m/s).
+    /// The reference's speed (m/s): the walk's, inside the references' speeds.
     pub reference_speed_mps: f64,
+    /// The speeds of the reference blocks it came from (m/s), equal when one was taken.
+    pub reference_blocks_mps: (f64, f64),
     /// Curve by curve.
     pub curves: Vec<CurveComparison>,
     /// The walk's spatiotemporal figures, as the report's summary measures them: cadence
@@ -282,7 +376,7 @@ fn range(v: &[f64]) -> f64 {
 
 /// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
 /// every 2 % of the right gait cycle.
-pub fn compare(path: &Path, params: &WalkParams, reference: &Reference) -> Result<Comparison> {
+pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Result<Comparison> {
     Ok(compare_measured(&measure::measure(path, params)?, reference))
 }
 
@@ -293,16 +387,17 @@ pub fn compare_recorded(
     cycles: u32,
     run: &Run,
     summary: &Summary,
-    reference: &Reference,
+    reference: &References,
 ) -> Result<Comparison> {
     Ok(compare_measured(&measure::recorded(path, cycles, run, summary)?, reference))
 }
 
-/// A walk already measured against `reference` (the fit measures once for this and for its
-/// constraints).
+/// A walk already measured against `references` at the speed it walked (the fit measures
+/// once for this and for its constraints).
 #[must_use]
-pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comparison {
+pub fn compare_measured(walk: &measure::Snapshot, references: &References) -> Comparison {
     let speed_mps = walk.summary.iter().find(|(k, _)| k == "speed_mps").map_or(f64::NAN, |(_, v)| *v);
+    let reference = &references.at(speed_mps);
     let mut curves = Vec::new();
     for ((stem, name, shape_only), (_, mean, sd)) in COMPARED.iter().zip(&reference.curves) {
         let ours = &walk.curves.iter().find(|(n, _)| n == name).expect("a measured curve").1;
@@ -346,6 +441,7 @@ pub fn compare_measured(walk: &measure::Snapshot, reference: &Reference) -> Comp
     Comparison {
         speed_mps,
         reference_speed_mps: reference.speed_mps,
+        reference_blocks_mps: reference.blocks_mps,
         curves,
         spatiotemporal,
         spatiotemporal_norms,
@@ -377,25 +473,68 @@ mod tests {
     fn the_norms_put_both_feet_down_at_heel_strike_with_the_heel_behind_the_ankle() {
         // Why HEEL_FRACTION is what it is: at heel strike the leading leg stands on its heel
         // and the trailing one (half a cycle on) on its ball; the same pelvis must sit on both.
-        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
+        // The comfortable-speed file the constant was set on.
+        let r = References::parse(COMFORTABLE, "comfortable").unwrap().at(1.245);
         let gap = |heel_back: f64| (hip_height(&r, 0, heel_back) - hip_height(&r, 50, heel_back)).abs();
         assert!(gap(HEEL_FRACTION) < 0.011, "{}", gap(HEEL_FRACTION));
         assert!(gap(0.0) > 0.03, "a heel under the ankle: {}", gap(0.0));
     }
 
     #[test]
-    fn the_built_in_reference_parses_and_a_bad_file_is_located() {
-        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
-        assert_eq!(r.curves.len(), 6);
-        assert!((r.speed_mps - 1.245).abs() < 1e-9);
-        let knee = &r.curves[1];
-        assert_eq!(knee.0, "knee_flex");
-        assert!((knee.1[74] - 62.26).abs() < 1e-9);
-        let e = Reference::parse("pct_cycle,speed_m_s\n0,1\n", "mine.csv").unwrap_err().to_string();
-        assert!(e.starts_with("mine.csv:") && e.contains("rows; expected 101"), "{e}");
-        let mut short = BUILT_IN.replace("hip_flex_sd_deg", "hip_sd");
-        assert!(Reference::parse(&short, "x.csv").unwrap_err().to_string().contains("no column `hip_flex_sd_deg`"));
-        short = BUILT_IN.replacen("0,1.245,29.87", "0,1.245,nan", 1);
-        assert!(Reference::parse(&short, "x.csv").unwrap_err().to_string().contains("finite"));
+    fn the_built_in_references_have_four_speed_blocks_and_are_read_at_the_walks_speed() {
+        let refs = References::built_in();
+        let speeds: Vec<f64> = refs.blocks.iter().map(|b| b.speed_mps).collect();
+        assert_eq!(speeds.len(), 4);
+        assert!(speeds.windows(2).all(|w| w[0] < w[1]) && (0.78..0.82).contains(&speeds[0]), "{speeds:?}");
+        assert!((1.55..1.65).contains(&speeds[3]), "{speeds:?}");
+        for b in &refs.blocks {
+            assert_eq!(b.curves.len(), 6);
+            assert!(b.curves.iter().all(|(_, m, s)| m.len() == 101 && s.len() == 101));
+        }
+        let knee = |r: &Reference| r.curves[1].1.clone();
+        // Loading-response knee flexion grows with speed (Fukuchi 2018, fig. 5).
+        let loading = |r: &Reference| knee(r)[..30].iter().copied().fold(f64::MIN, f64::max);
+        assert!(refs.blocks.windows(2).all(|w| loading(&w[1]) > loading(&w[0]) + 2.0));
+        // Between two blocks: the linear mix; at or beyond an end: the end block itself.
+        let mid = refs.at(0.5 * (speeds[1] + speeds[2]));
+        assert!((knee(&mid)[74] - 0.5 * (knee(&refs.blocks[1])[74] + knee(&refs.blocks[2])[74])).abs() < 1e-9);
+        assert_eq!(mid.blocks_mps, (speeds[1], speeds[2]));
+        assert_eq!(refs.at(0.3).curves, refs.blocks[0].curves);
+        assert_eq!(refs.at(2.5).curves, refs.blocks[3].curves);
+        assert_eq!(refs.at(2.5).speed_mps, speeds[3]);
+        assert!(refs.at(2.5).blocks_used(2.5).contains("the walk is faster; not extrapolated"));
+        assert_eq!(refs.at(f64::NAN).curves, refs.blocks[0].curves);
     }
+
+    #[test]
+    fn a_bad_reference_file_is_located_by_line() {
+        let one_block = References::parse(COMFORTABLE, "comfortable").unwrap();
+        assert_eq!(one_block.blocks.len(), 1);
+        assert!((one_block.at(0.8).speed_mps - 1.245).abs() < 1e-9);
+        assert!((one_block.blocks[0].curves[1].1[74] - 62.26).abs() < 1e-9);
+        let e = References::parse("pct_cycle,speed_m_s\n0,1\n", "mine.csv").unwrap_err().to_string();
+        assert!(e.starts_with("mine.csv:") && e.contains("no column `hip_flex_mean_deg`"), "{e}");
+        let mut bad = COMFORTABLE.replace("hip_flex_sd_deg", "hip_sd");
+        assert!(References::parse(&bad, "x.csv").unwrap_err().to_string().contains("no column `hip_flex_sd_deg`"));
+        bad = COMFORTABLE.replacen("0,1.245,29.87", "0,1.245,nan", 1);
+        assert!(References::parse(&bad, "x.csv").unwrap_err().to_string().contains("finite"));
+        // A block one row short, and blocks out of order, name their first line.
+        let lines: Vec<&str> = BUILT_IN.lines().collect();
+        let first_row = lines.iter().position(|l| l.starts_with("0,")).unwrap();
+        let short: String =
+            lines.iter().enumerate().filter(|(i, _)| *i != first_row + 5).map(|(_, l)| format!("{l}\n")).collect();
+        let e = References::parse(&short, "s.csv").unwrap_err().to_string();
+        assert!(e.starts_with(&format!("s.csv:{}:", first_row + 1)) && e.contains("100 rows at"), "{e}");
+        let header = lines[first_row - 1];
+        let swapped = format!(
+            "{header}\n{}\n{}\n",
+            lines[first_row + 101..first_row + 202].join("\n"),
+            lines[first_row..first_row + 101].join("\n")
+        );
+        let e = References::parse(&swapped, "o.csv").unwrap_err().to_string();
+        assert!(e.starts_with("o.csv:103:") && e.contains("slowest first"), "{e}");
+    }
+
+    /// The comfortable-speed reference (T05 only), which a user can pass with `--reference`.
+    const COMFORTABLE: &str = include_str!("../data/normative/normative_adult_walking.csv");
 }

@@ -63,7 +63,7 @@ fn the_walk_against_itself_deviates_by_nothing() {
         }
         csv.push('\n');
     }
-    let reference = gaitlab::normative::Reference::parse(&csv, "self.csv").unwrap();
+    let reference = gaitlab::normative::References::parse(&csv, "self.csv").unwrap();
     let c = gaitlab::normative::compare(path, &params, &reference).unwrap();
     for k in &c.curves {
         assert!(k.rms_deg < 1e-9, "{}: {}", k.curve, k.rms_deg);
@@ -77,6 +77,13 @@ fn a_bad_reference_is_refused_with_its_place() {
     std::fs::create_dir_all(&dir).unwrap();
     let bad = dir.join("ref.csv");
     std::fs::write(&bad, "pct_cycle,speed_m_s,hip_flex_mean_deg\n0,1.2,oops\n").unwrap();
+    let o = gaitlab(&["compare", "configs/default.toml", "--reference", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("ref.csv:1:") && e.contains("no column `hip_flex_sd_deg`"), "{e}");
+    // Every column there, a value not a number: its line.
+    let header = "pct_cycle,speed_m_s,hip_flex_mean_deg,hip_flex_sd_deg,knee_flex_mean_deg,knee_flex_sd_deg,ankle_dorsi_mean_deg,ankle_dorsi_sd_deg,pelvis_tilt_ant_mean_deg,pelvis_tilt_ant_sd_deg,pelvis_obliq_up_mean_deg,pelvis_obliq_up_sd_deg,pelvis_rot_fwd_mean_deg,pelvis_rot_fwd_sd_deg";
+    std::fs::write(&bad, format!("{header}\n0,1.2,oops,1,1,1,1,1,1,1,1,1,1,1\n")).unwrap();
     let o = gaitlab(&["compare", "configs/default.toml", "--reference", bad.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);
@@ -104,10 +111,22 @@ fn the_walks_spatiotemporal_figures_come_with_the_comparison_and_agree_with_its_
 #[test]
 fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
     let norms = gaitlab::normative::SpeedNorms::built_in();
-    for (config, blocks) in [
-        ("configs/stroll.toml", "interpolated between the 0.862 and 1.048 m/s blocks"),
-        ("configs/default.toml", "interpolated between the 1.232 and 1.417 m/s blocks"),
-        ("configs/brisk.toml", "the fastest block, 1.417 m/s (the walk is faster; not extrapolated)"),
+    for (config, blocks, curves) in [
+        (
+            "configs/stroll.toml",
+            "interpolated between the 0.862 and 1.048 m/s blocks",
+            "interpolated between the 0.796 and 0.997 m/s blocks",
+        ),
+        (
+            "configs/default.toml",
+            "interpolated between the 1.232 and 1.417 m/s blocks",
+            "interpolated between the 0.997 and 1.303 m/s blocks",
+        ),
+        (
+            "configs/brisk.toml",
+            "the fastest block, 1.417 m/s (the walk is faster; not extrapolated)",
+            "the fastest block, 1.593 m/s (the walk is faster; not extrapolated)",
+        ),
     ] {
         let o = gaitlab(&["compare", config, "--json"]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -120,11 +139,15 @@ fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
             assert!((f("cadence_norm_spm") - at.cadence_spm.0).abs() < 1e-9, "{config}");
             assert!((f("stride_length_norm_sd_m") - at.stride_length_m.1).abs() < 1e-12, "{config}");
             assert_eq!((f("norm_from_block_mps"), f("norm_to_block_mps")), (at.from_block_mps, at.to_block_mps));
-            assert_eq!(f("reference_speed_mps"), 1.245, "the curves' reference speed");
+            // The curves' reference: the walk's speed inside the blocks' 0.796-1.593 m/s.
+            assert!((f("reference_speed_mps") - f("speed_mps").clamp(0.796, 1.593)).abs() < 1e-9, "{config}");
         }
         let table = String::from_utf8_lossy(&gaitlab(&["compare", config]).stdout).to_string();
         let norms_line = table.lines().nth(2).unwrap();
         assert!(norms_line.starts_with("# norms at ") && norms_line.contains(blocks), "{config}: {table}");
-        assert!(table.lines().next().unwrap().ends_with("at 1.245 m/s; right gait cycle, every 2 %"), "{table}");
+        assert!(
+            table.lines().next().unwrap().ends_with(&format!("({curves}); right gait cycle, every 2 %")),
+            "{table}"
+        );
     }
 }

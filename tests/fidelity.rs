@@ -1,69 +1,79 @@
 //! The walk against measured human gait (issue 12): a ratchet on `gaitlab compare`'s figures
-//! for the shipped speeds, and the shapes the calibration set out to give.
+//! for the shipped speeds, against the speed-matched references (data/normative/
+//! joint_angles_by_speed.csv: young adults' treadmill trials at 0.80 / 1.00 / 1.30 / 1.59 m/s,
+//! read at the walk's speed), and the shapes the calibration set out to give.
 //!
-//! Measured 2026-11-23 after the calibration (before it, on the default walk: hip r 0.961 /
-//! RMS 11.4°, knee 0.880 / 12.3°, ankle 0.821 / 10.3°, the ankle never below −0.4°). The
-//! issue's targets are r ≥ 0.95 and RMS ≤ 5° (ankle ≤ 4°). As of session 11: shapes (r) meet
-//! them for hip and knee at every speed and for the ankle from 1.0 m/s up (0.913 at 0.8);
-//! RMS for the hip from 0.8 to 1.3 m/s, for the ankle at 1.0 and 1.3 m/s, and never yet for
-//! the knee (9.6° at 1.3 m/s): its loading response is too flexed (the pelvis still falls
-//! after heel strike) and the reference is one speed (1.245 m/s), so slower and brisker walks
-//! are compared with another speed's curves. Each bound is the measured value with a small
-//! margin: a change that moves the walk away from the norms fails here.
+//! The issue's targets are r >= 0.95, RMS <= 5 deg (ankle <= 4) and >= 80 % of the cycle
+//! inside +-2 SD. Measured 2026-11-25 against the speed-matched references: the shapes (r)
+//! meet them for every joint at every speed; the hip's RMS at every speed but brisk (5.02);
+//! the ankle's from 0.8 to 1.3 m/s; the knee's nowhere (9.3 deg at 1.3 m/s, 53 % of its
+//! cycle outside +-2 SD): too flexed after heel strike and late to extend in terminal swing.
+//! Against the single 1.245 m/s reference used before, the slow walks had read better (knee
+//! 8.1 at 0.8 m/s: the comfortable walk's loading flexion of 16 deg sat nearer the walk's
+//! than the 8 deg people show at 0.8 m/s) and the hip worse. Each bound is the measured value
+//! with a small margin: a change that moves the walk away from the norms fails here.
 
-use gaitlab::normative::{self, Comparison, Reference};
+use gaitlab::normative::{self, Comparison, References};
 use std::path::Path;
 
 fn compare(config: &str, sets: &[&str]) -> Comparison {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(config);
     let sets: Vec<String> = sets.iter().map(|s| (*s).to_string()).collect();
     let params = gaitlab::config::load(&path, &sets).unwrap();
-    let reference = Reference::parse(normative::BUILT_IN, "built-in").unwrap();
-    normative::compare(&path, &params, &reference).unwrap()
+    normative::compare(&path, &params, &References::built_in()).unwrap()
 }
 
-/// (rms_deg at most, r at least) for hip, knee, ankle.
-type Bounds = [(f64, f64); 3];
+/// (rms_deg at most, r at least, % of the cycle outside +-2 SD at most) for hip, knee, ankle.
+type Bounds = [(f64, f64, f64); 3];
 
 #[test]
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
+    // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // Measured in session 11 with the norms' walk ratio (0.0055; cadence and stride within
-        // 0.1 SD of the speed norms at 0.8-1.3 m/s, against -1.2 / +1.0 SD before) and the toe
-        // lifted by the ankle in swing. Default 1.3 m/s: hip 4.76 / 0.992, knee 9.64 / 0.975,
-        // ankle 3.39 / 0.983 (before both: 5.89 / 0.992, 10.70 / 0.975, 4.18 / 0.959).
-        ("configs/default.toml", &[], [(5.1, 0.985), (10.0, 0.965), (3.7, 0.975)]),
-        // Slower walks take the norms' shorter step and, as people do, a smaller hip range;
-        // against the one-speed (1.245 m/s) reference that reads as a larger RMS. Stroll:
-        // 4.49 / 0.984, 8.31 / 0.971, 4.03 / 0.932 (before: 3.41 / 0.989, 7.01 / 0.975,
-        // 2.65 / 0.955).
-        ("configs/stroll.toml", &[], [(4.9, 0.98), (8.7, 0.965), (4.4, 0.925)]),
-        // 7.16 / 0.996, 14.15 / 0.973, 6.41 / 0.928 (1.75 m/s against 1.245 m/s norms; before:
-        // 9.22 / 0.996, 15.87 / 0.971, 8.11 / 0.900).
-        ("configs/brisk.toml", &[], [(7.6, 0.99), (14.6, 0.965), (6.8, 0.92)]),
-        // 4.40 / 0.981, 8.06 / 0.968, 4.37 / 0.913 (before: 3.25 / 0.987, 7.13 / 0.967,
-        // 3.09 / 0.939).
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(4.8, 0.975), (8.5, 0.96), (4.8, 0.905)]),
-        // 3.84 / 0.990, 8.51 / 0.971, 3.59 / 0.962 (before: 3.91 / 0.991, 7.67 / 0.979,
-        // 2.72 / 0.962).
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(4.2, 0.985), (8.9, 0.965), (4.0, 0.955)]),
-        // 4.76 / 0.992, 9.64 / 0.975, 3.39 / 0.983.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(5.1, 0.985), (10.0, 0.965), (3.7, 0.975)]),
-        // 6.66 / 0.993, 12.81 / 0.978, 5.14 / 0.972 (before: 8.14 / 0.996, 14.26 / 0.971,
-        // 6.88 / 0.914).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(7.1, 0.99), (13.2, 0.97), (5.5, 0.965)]),
+        // 4.28 / 0.992 / 0; 9.34 / 0.976 / 53; 3.50 / 0.984 / 18.
+        ("configs/default.toml", &[], [(4.6, 0.985, 0.0), (9.7, 0.97, 57.0), (3.8, 0.975, 22.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 5.00 / 0.988 / 0; 10.49 / 0.971 / 43;
+        // 3.07 / 0.974 / 0.
+        ("configs/stroll.toml", &[], [(5.3, 0.98, 0.0), (10.9, 0.965, 47.0), (3.4, 0.965, 4.0)]),
+        // 1.75 m/s, against the fastest block (1.59 m/s): 5.02 / 0.996 / 0; 12.91 / 0.982 / 73;
+        // 5.88 / 0.968 / 41.
+        ("configs/brisk.toml", &[], [(5.4, 0.99, 0.0), (13.3, 0.975, 77.0), (6.2, 0.96, 45.0)]),
+        // 4.83 / 0.988 / 0; 10.88 / 0.969 / 33; 3.09 / 0.964 / 0.
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(5.1, 0.98, 0.0), (11.3, 0.96, 37.0), (3.4, 0.955, 4.0)]),
+        // 4.55 / 0.992 / 0; 9.97 / 0.970 / 43; 3.30 / 0.965 / 12.
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(4.9, 0.985, 0.0), (10.4, 0.96, 47.0), (3.6, 0.955, 16.0)]),
+        // As the default.
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(4.6, 0.985, 0.0), (9.7, 0.97, 57.0), (3.8, 0.975, 22.0)]),
+        // 4.83 / 0.993 / 0; 11.58 / 0.985 / 75; 5.15 / 0.971 / 43.
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(5.1, 0.985, 0.0), (12.0, 0.975, 79.0), (5.5, 0.96, 47.0)]),
     ];
     for (config, sets, bounds) in cases {
         let c = compare(config, sets);
-        for (curve, (max_rms, min_r)) in ["hip_flex", "knee_flex", "ankle_dorsi"].iter().zip(bounds) {
+        for (curve, (max_rms, min_r, max_out2)) in ["hip_flex", "knee_flex", "ankle_dorsi"].iter().zip(bounds) {
             let k = c.curves.iter().find(|k| k.curve == *curve).unwrap();
             assert!(
-                k.rms_deg <= max_rms && k.pearson_r >= min_r,
-                "{config} {sets:?} {curve}: rms {:.2} (<= {max_rms}), r {:.3} (>= {min_r})",
+                k.rms_deg <= max_rms && k.pearson_r >= min_r && k.outside_2sd_pct <= max_out2,
+                "{config} {sets:?} {curve}: rms {:.2} (<= {max_rms}), r {:.3} (>= {min_r}), outside 2 SD {:.0} % (<= {max_out2})",
                 k.rms_deg,
-                k.pearson_r
+                k.pearson_r,
+                k.outside_2sd_pct
             );
         }
+    }
+}
+
+/// The reference each comparison used is the walk's own speed's (inside the blocks).
+#[test]
+fn each_walk_is_compared_with_the_norms_of_its_own_speed() {
+    for (config, sets, blocks) in [
+        ("configs/default.toml", &["walk.speed_mps=0.8"][..], (0.796, 0.997)),
+        ("configs/default.toml", &["walk.speed_mps=1.6"][..], (1.593, 1.593)),
+        ("configs/stroll.toml", &[][..], (0.796, 0.997)),
+    ] {
+        let c = compare(config, sets);
+        let expected = c.speed_mps.clamp(0.796, 1.593);
+        assert!((c.reference_speed_mps - expected).abs() < 1e-9, "{config} {sets:?}: {}", c.reference_speed_mps);
+        assert_eq!(c.reference_blocks_mps, blocks, "{config} {sets:?}");
     }
 }
 

@@ -18,6 +18,8 @@ fn json(out: &std::process::Output) -> serde_json::Value {
 /// 2026-11-25, with cadence and obliquity fitted too, to end at 3.00 / 7.37 / 2.79, cost
 /// 13.03 -> 4.39 (2026-11-23, six keys: 4.3 / 8.2 / 4.5, cost 5.66); session 11, with the
 /// swing ankle lifting the toe: 2.79 / 6.21 / 2.99 (ankle r 0.919), cost 11.09 -> 4.00.
+/// Against the speed-matched references (2026-11-25, the reference at 1.30 m/s instead of
+/// 1.245): from 6.81 / 12.47 / 10.43 to 2.36 / 5.41 / 2.21 (ankle r 0.954), cost 9.90 -> 3.33.
 const BAD: [&str; 8] = [
     "--set",
     "pelvis.vertical_range_cm=0.6",
@@ -35,9 +37,9 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
     args.extend(BAD);
     let (a, b) = (json(&gaitlab(&args)), json(&gaitlab(&args)));
     let (before, after) = (a["cost_before"].as_f64().unwrap(), a["cost_after"].as_f64().unwrap());
-    // (The bad start costs 11.1, the shipped default 5.8.)
-    assert!(before > 10.0 && after < 4.8, "{before} -> {after}");
-    for (curve, most, least_r) in [("hip_flex", 3.3, 0.97), ("knee_flex", 6.7, 0.96), ("ankle_dorsi", 3.3, 0.91)] {
+    // (The bad start costs 9.9, the shipped default 5.7.)
+    assert!(before > 9.5 && after < 3.7, "{before} -> {after}");
+    for (curve, most, least_r) in [("hip_flex", 2.7, 0.975), ("knee_flex", 5.8, 0.97), ("ankle_dorsi", 2.6, 0.94)] {
         let k = a["curves_after"].as_array().unwrap().iter().find(|k| k["curve"] == curve).unwrap();
         assert!(k["rms_deg"].as_f64().unwrap() <= most, "{curve}: {k}");
         assert!(k["pearson_r"].as_f64().unwrap() >= least_r, "{curve}: {k}");

@@ -123,13 +123,13 @@ fn n_draws_the_norms_band_behind_the_joint_traces_at_every_size_and_n_again_hide
 }
 
 #[test]
-fn the_band_names_its_one_speed_where_the_panel_has_room() {
+fn the_band_names_the_walks_speed_where_the_panel_has_room() {
     let mut app = walked(None);
     key(&mut app, 'n');
     let wide = text(&render(&app, 160, 48));
-    assert!(wide.contains("band: right leg; at 1.245 m/s, not speed-matched"), "{wide}");
+    assert!(wide.contains("band: right leg, adults at 1.30 m/s"), "{wide}");
     let narrow = text(&render(&app, 80, 24));
-    assert!(narrow.contains("right leg, 1.245 m/s only"), "{narrow}");
+    assert!(narrow.contains("right leg, 1.30 m/s"), "{narrow}");
 }
 
 #[test]

@@ -61,3 +61,16 @@ pub(super) fn in_range<T: PartialOrd + std::fmt::Display>(
         Err(Error::Usage(format!("{option} {value} is out of range; valid: {valid}")))
     }
 }
+
+/// The references `compare` and `fit` measure against, and how their output names them: the
+/// file given (one speed block or several), else the built-in ones by speed.
+pub(super) fn references(file: Option<&std::path::Path>) -> Result<(crate::normative::References, String)> {
+    use crate::normative::{self, References};
+    Ok(match file {
+        Some(file) => {
+            let text = crate::config::read_source(file)?;
+            (References::parse(&text, &file.display().to_string())?, file.display().to_string())
+        }
+        None => (References::built_in(), normative::BUILT_IN_SOURCE.to_string()),
+    })
+}

@@ -4,19 +4,13 @@
 use super::common::stdout_written;
 use crate::config;
 use crate::error::Result;
-use crate::normative::{self, Comparison, Reference};
+use crate::normative::{self, Comparison};
 use std::io::{self, Write};
 use std::path::Path;
 
 pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[String]) -> Result<()> {
     let params = config::load(path, sets)?;
-    let (reference, source) = match reference {
-        Some(file) => {
-            let text = config::read_source(file)?;
-            (Reference::parse(&text, &file.display().to_string())?, file.display().to_string())
-        }
-        None => (Reference::parse(normative::BUILT_IN, "built-in reference")?, normative::BUILT_IN_SOURCE.to_string()),
-    };
+    let (reference, source) = super::common::references(reference)?;
     let comparison = normative::compare(path, &params, &reference)?;
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
@@ -28,10 +22,11 @@ pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[Str
 fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -> io::Result<()> {
     writeln!(
         out,
-        "# {} at {:.3} m/s against {source} at {:.3} m/s; right gait cycle, every 2 %",
+        "# {} at {:.3} m/s against {source} at {:.3} m/s ({}); right gait cycle, every 2 %",
         path.display(),
         c.speed_mps,
-        c.reference_speed_mps
+        c.reference_speed_mps,
+        c.reference_blocks()
     )?;
     if let Some(part) = &c.steady_part {
         writeln!(
@@ -106,6 +101,8 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         let mut line = serde_json::to_value(k).map_err(io::Error::other)?;
         line["speed_mps"] = c.speed_mps.into();
         line["reference_speed_mps"] = c.reference_speed_mps.into();
+        line["reference_from_block_mps"] = c.reference_blocks_mps.0.into();
+        line["reference_to_block_mps"] = c.reference_blocks_mps.1.into();
         for (key, value) in c.spatiotemporal {
             line[key] = value.into();
         }

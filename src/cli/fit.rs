@@ -5,7 +5,7 @@ use super::common::{in_range, stdout_written};
 use crate::config::{self, schema::PARAMS};
 use crate::error::{Error, Result};
 use crate::fit::{self, FIT_KEYS, FitOptions, FitResult};
-use crate::normative::{self, Comparison, Reference};
+use crate::normative::Comparison;
 use crate::output::{self, FileTarget};
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
@@ -25,13 +25,7 @@ pub(super) fn run(path: &Path, args: &Args<'_>, sets: &[String]) -> Result<()> {
     // Refused before any walking: a fit takes seconds.
     let target = args.out.map(FileTarget::resolve).transpose()?;
     let (text, params) = config::load_with_text(path, sets)?;
-    let (reference, source) = match args.reference {
-        Some(file) => {
-            let text = config::read_source(file)?;
-            (Reference::parse(&text, &file.display().to_string())?, file.display().to_string())
-        }
-        None => (Reference::parse(normative::BUILT_IN, "built-in reference")?, normative::BUILT_IN_SOURCE.to_string()),
-    };
+    let (reference, source) = super::common::references(args.reference)?;
     if io::stderr().is_terminal() {
         eprintln!("gaitlab fit: up to {evaluations} walks of {cycles} cycles");
     }
@@ -41,7 +35,7 @@ pub(super) fn run(path: &Path, args: &Args<'_>, sets: &[String]) -> Result<()> {
     // With the config on stdout (`--out -`), the table goes to stderr: one stream, one file.
     let config_on_stdout = matches!(target, Some(FileTarget::Stdout));
     if let Some(target) = target {
-        let fitted = fitted_config(&text, &params, &result, &source, reference.speed_mps)?;
+        let fitted = fitted_config(&text, &params, &result, &source)?;
         output::write_file(&target, |out: &mut dyn Write| out.write_all(fitted.as_bytes()))?;
     }
     let mut out: Box<dyn Write> = if config_on_stdout {
@@ -64,7 +58,6 @@ fn fitted_config(
     params: &crate::model::params::WalkParams,
     result: &FitResult,
     source: &str,
-    reference_speed: f64,
 ) -> Result<String> {
     let read = config::load_text(text, "config", &[])?;
     let mut keys: Vec<&str> = PARAMS.iter().filter(|p| (p.get)(&read) != (p.get)(params)).map(|p| p.key).collect();
@@ -76,9 +69,11 @@ fn fitted_config(
     let body = config::edit::edited_text(text, &result.params, &keys).map_err(Error::Usage)?;
     let (before, after) = (rms_line(&result.comparison.0), rms_line(&result.comparison.1));
     Ok(format!(
-        "# Fitted by `gaitlab fit` against {source} at {reference_speed:.3} m/s.\n\
+        "# Fitted by `gaitlab fit` against {source} at {:.3} m/s ({}).\n\
          # Hip / knee / ankle RMS difference (deg): {before} before, {after} after ({} walks).\n\
          # Keys fitted: {}.\n\n{body}",
+        result.comparison.0.reference_speed_mps,
+        result.comparison.0.reference_blocks(),
         result.evaluations,
         fitted.join(", ")
     ))
@@ -99,10 +94,11 @@ fn write_table(
     let (before, after) = &r.comparison;
     writeln!(
         out,
-        "# {} at {:.3} m/s against {source} at {:.3} m/s: {} walks in {seconds:.1} s",
+        "# {} at {:.3} m/s against {source} at {:.3} m/s ({}): {} walks in {seconds:.1} s",
         path.display(),
         before.speed_mps,
         before.reference_speed_mps,
+        before.reference_blocks(),
         r.evaluations
     )?;
     writeln!(out, "{:<28} {:>9} {:>9}  range", "key", "start", "fitted")?;

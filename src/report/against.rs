@@ -4,15 +4,14 @@
 
 use super::metrics::Summary;
 use crate::analysis::Run;
-use crate::normative::{self, Comparison, CurveComparison, Reference};
+use crate::normative::{self, Comparison, CurveComparison, References};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
 
 /// The report's walk (`cycles` of the config named `name`) against the built-in reference.
 pub(super) fn compare(name: &str, cycles: u32, run: &Run, summary: &Summary) -> crate::Result<Comparison> {
-    let reference = Reference::parse(normative::BUILT_IN, "built-in reference")?;
-    normative::compare_recorded(Path::new(name), cycles, run, summary, &reference)
+    normative::compare_recorded(Path::new(name), cycles, run, summary, &References::built_in())
 }
 
 /// `summary.json`: the interface's keys as they always were, then the comparison's headline
@@ -66,7 +65,7 @@ fn label(stem: &str) -> &str {
 pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Comparison) {
     let _ = write!(
         md,
-        "\n## Against measured gait\n\n`{name}` at {:.3} m/s against {} at {:.3} m/s, over the mean \
+        "\n## Against measured gait\n\n`{name}` at {:.3} m/s against {} at {:.3} m/s ({}), over the mean \
          steady right gait cycle every 2 % (as `gaitlab compare` gives it).{} Difference = walk − \
          reference; r: Pearson r of the two mean curves (the shape, blind to offset and scale); \
          outside ±1 / ±2 SD: share of the cycle beyond the reference's mean ± 1 / 2 SD; range of \
@@ -79,6 +78,7 @@ pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Compariso
         c.speed_mps,
         normative::BUILT_IN_SOURCE,
         c.reference_speed_mps,
+        c.reference_blocks(),
         compared_note(name, compared, c),
     );
     for k in &c.curves {

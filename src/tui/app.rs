@@ -14,7 +14,7 @@ use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::frame::Frame;
 use crate::model::walk::{ModelError, Walker};
-use crate::normative::{self, Reference};
+use crate::normative::{self, Reference, References};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::cell::RefCell;
 use std::collections::VecDeque;
@@ -103,9 +103,9 @@ pub struct App {
     pub(crate) grid: bool,
     /// The measured adults' mean ± 1 SD behind the joint traces.
     pub norms: bool,
-    /// The built-in normative reference, parsed once for every frame that draws its band
-    /// (`None` only if the file bundled in the binary were broken: no band then).
-    pub(crate) reference: Option<Reference>,
+    /// The built-in normative references by speed, parsed once for every frame that draws
+    /// their band (`None` only if the file bundled in the binary were broken: no band then).
+    pub(crate) references: Option<References>,
     /// Panel beside the walk on narrow screens.
     pub panel: Panel,
     /// The selected parameter (index into [`PARAMS`]).
@@ -167,7 +167,7 @@ impl App {
             curve: 0,
             grid: false,
             norms: false,
-            reference: Reference::parse(normative::BUILT_IN, "built-in reference").ok(),
+            references: References::parse(normative::BUILT_IN, "built-in reference").ok(),
             panel: Panel::Editor,
             selected: PARAMS.iter().position(|p| p.key == "walk.speed_mps").unwrap_or(0),
             overlay: None,
@@ -204,6 +204,14 @@ impl App {
     #[must_use]
     pub fn speed(&self) -> f64 {
         SPEEDS[self.speed_index]
+    }
+
+    /// The norms at the speed the walk walks now (its pace, as a schedule or an edit left
+    /// it), for the joint panel's band; `None` with the band off.
+    #[must_use]
+    pub(crate) fn norms_band(&self) -> Option<Reference> {
+        let r = self.walker.resolved();
+        self.references.as_ref().filter(|_| self.norms).map(|refs| refs.at(r.stride_m / r.cycle_s))
     }
 
     /// The file name shown in the status bar.

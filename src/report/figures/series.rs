@@ -8,7 +8,7 @@ use crate::model::gait_curves::CurveName;
 use crate::model::params::WalkParams;
 use crate::model::terrain::{Terrain, TerrainKind};
 use crate::model::walk::leg::LegPhase;
-use crate::normative::{self, Reference};
+use crate::normative::References;
 use crate::report::plots::data::Data;
 use crate::report::plots::{Band, Figure, Line, Panel};
 use std::fmt::Write as _;
@@ -215,12 +215,12 @@ pub(super) fn ankle(own: &Recording) -> Result<Made, String> {
     let d = Data::new(own);
     let walk = d.cycle(0, &|i| own.frames[i].legs[0].ankle_dorsi_deg);
     let to = d.events.iter().find(|e| e.0 == "RTO").map_or(62.0, |e| e.1);
-    let reference = Reference::parse(normative::BUILT_IN, "built-in").map_err(|e| e.to_string())?;
+    let reference = References::built_in().at(d.speed_mps());
     let (_, mean, sd) = reference.curves.iter().find(|(s, _, _)| s == "ankle_dorsi").ok_or("no ankle norms")?;
     let lower = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m - s));
     let upper: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m + s)).collect();
     let band = Band {
-        name: "adults, Fukuchi 2018 (mean +-1 SD)".into(),
+        name: format!("adults at {:.2} m/s, Fukuchi 2018 (mean +-1 SD)", reference.speed_mps),
         polygon: lower.chain(upper.into_iter().rev()).collect(),
     };
     let rights: Vec<_> = own.step_plans.iter().filter(|p| p.side == Side::Right).collect();

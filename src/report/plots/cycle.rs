@@ -6,7 +6,7 @@ use super::common::{
 };
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
-use crate::normative::Reference;
+use crate::normative::{Reference, References};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -115,7 +115,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         .map_err(err)?;
     let areas = root.split_evenly((2, 3));
     let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
-    let reference = built_in();
+    let reference = speed_matched(&walks[0].1);
     // Signs, checked before drawing: the walk's obliquity is + with the right hip up and its
     // rotation + with the right hip forward (`PelvisPose::new`, its test
     // `obliquity_lifts_the_right_hip`); the reference's are the right side's pelvis angles
@@ -127,9 +127,9 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     // marker model and the walk's tilt is a swing about its posture: a shape band, moved
     // onto the report's own walk's mean.
     let norms = [
-        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_tilt_ant", Some(mean_of(&cycles[0][0])))),
-        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_obliq_up", None)),
-        reference.as_ref().and_then(|r| normative_cycle(r, "pelvis_rot_fwd", None)),
+        normative_cycle(&reference, "pelvis_tilt_ant", Some(mean_of(&cycles[0][0]))),
+        normative_cycle(&reference, "pelvis_obliq_up", None),
+        normative_cycle(&reference, "pelvis_rot_fwd", None),
     ];
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
         let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
@@ -142,9 +142,9 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
                 (name, PALETTE[k % PALETTE.len()], &cycles[k][p])
             })
             .collect();
+        let band_name = norm_name(&reference, p == 0);
         if let Some(norm) = norms.get(p).and_then(Option::as_ref) {
-            let name = if p == 0 { NORM_TILT_NAME } else { NORM_NAME };
-            lines.insert(0, (name, NORM, norm));
+            lines.insert(0, (band_name.as_str(), NORM, norm));
         }
         cycle_chart(area, title, unit, &lines, &walks[0].1.events)?;
     }
@@ -154,15 +154,17 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
 /// The normative band's colour: grey, behind the walks.
 const NORM: RGBColor = RGBColor(120, 120, 120);
 
-/// The normative band's legend entry.
-const NORM_NAME: &str = "adults, Fukuchi 2018 (+-1 SD)";
+/// The normative band's legend entry: whose, at what speed; for the pelvic tilt, that the band
+/// is the reference's shape, not its level.
+fn norm_name(reference: &Reference, tilt: bool) -> String {
+    let shape = if tilt { "\nshape about the walk's mean" } else { "" };
+    format!("adults at {:.2} m/s, Fukuchi 2018 (+-1 SD){shape}", reference.speed_mps)
+}
 
-/// The pelvic tilt band's legend entry: the reference's shape, not its level.
-const NORM_TILT_NAME: &str = "adults, Fukuchi 2018 (+-1 SD)\nshape about the walk's mean";
-
-/// The built-in reference. It is part of the binary and checked by a test, so it parses.
-fn built_in() -> Option<Reference> {
-    Reference::parse(crate::normative::BUILT_IN, "built-in").ok()
+/// The built-in references at the speed `walk` walked its drawn cycles at, as the summary's
+/// comparison reads them.
+fn speed_matched(walk: &Data<'_>) -> Reference {
+    References::built_in().at(walk.speed_mps())
 }
 
 /// The mean of a cycle's mean curve over its points.
@@ -201,7 +203,8 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         ("knee", "knee_flex", "flexion + (deg)", |l| l.knee_flex_deg),
         ("ankle", "ankle_dorsi", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
     ];
-    let reference = built_in();
+    let reference = speed_matched(&walks[0].1);
+    let band_name = norm_name(&reference, false);
     for (area, (name, stem, unit, pick)) in areas.iter().zip(joints) {
         let mut cycles = Vec::new();
         for (k, (walk, d)) in walks.iter().enumerate() {
@@ -214,8 +217,8 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
             }
         }
         // Measured adult walking behind the walk's curves: mean and +-1 SD.
-        if let Some(norm) = reference.as_ref().and_then(|r| normative_cycle(r, stem, None)) {
-            cycles.insert(0, (NORM_NAME.to_string(), NORM, norm));
+        if let Some(norm) = normative_cycle(&reference, stem, None) {
+            cycles.insert(0, (band_name.clone(), NORM, norm));
         }
         let lines: Vec<(&str, RGBColor, &Cycle)> = cycles.iter().map(|(n, c, cy)| (n.as_str(), *c, cy)).collect();
         cycle_chart(area, name, unit, &lines, &walks[0].1.events)?;

@@ -62,6 +62,16 @@ impl<'a> Data<'a> {
         Data { run, strikes, events }
     }
 
+    /// The walk's speed over the cycles drawn (m/s), right heel strike to right heel strike as
+    /// the summary measures it; the config's speed for a walk with fewer than two strikes.
+    pub(crate) fn speed_mps(&self) -> f64 {
+        let f = &self.run.frames;
+        match (self.strikes[0].first(), self.strikes[0].last()) {
+            (Some(&a), Some(&b)) if b > a => (f[b].pelvis.x - f[a].pelvis.x) / (f[b].time_s - f[a].time_s),
+            _ => self.run.start_speed_mps,
+        }
+    }
+
     /// `value` per frame, normalised to each of `side`'s steady cycles.
     pub(crate) fn cycle(&self, side: usize, value: &dyn Fn(usize) -> f64) -> Cycle {
         let frames = &self.run.frames;

@@ -298,9 +298,9 @@ fn at_phase(mean: &[f64], sd: &[f64], phase: f64) -> (f64, f64) {
 }
 
 /// What the band is, said beside the hip trace's name as fully as the row allows: the
-/// reference walked at one speed only, so the band cannot follow the walk's speed.
+/// right leg's cycle, read at the walk's own speed.
 fn band_note(speed_mps: f64, room: usize) -> Option<String> {
-    [format!("band: right leg; at {speed_mps} m/s, not speed-matched"), format!("right leg, {speed_mps} m/s only")]
+    [format!("band: right leg, adults at {speed_mps:.2} m/s"), format!("right leg, {speed_mps:.2} m/s")]
         .into_iter()
         .find(|n| n.chars().count() <= room)
 }
@@ -308,7 +308,8 @@ fn band_note(speed_mps: f64, room: usize) -> Option<String> {
 /// Hip, knee and ankle angles of both legs over the last cycles; with the norms on, the
 /// measured adults' mean ± 1 SD behind them, following the right leg's cycle.
 pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
-    let reference = app.reference.as_ref().filter(|_| app.norms);
+    let norms = app.norms_band();
+    let reference = norms.as_ref();
     let title = Line::raw(" Joint angles (deg) over time (s) ");
     let legend = joints_legend(app, reference.is_some(), area.width.saturating_sub(2));
     let inner = super::panel(f, area, title, Some(legend));
@@ -447,11 +448,11 @@ fn paint_band(buf: &mut Buffer, canvas: Rect, x: [f64; 2], y: [f64; 2], band: &[
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::normative::{BUILT_IN, Reference};
+    use crate::normative::References;
 
     #[test]
     fn the_band_reads_the_reference_at_the_phase_in_percent_of_the_cycle() {
-        let r = Reference::parse(BUILT_IN, "built-in").unwrap();
+        let r = References::built_in().at(1.3);
         let (_, mean, sd) = r.curves.iter().find(|c| c.0 == "knee_flex").unwrap();
         assert_eq!(at_phase(mean, sd, 0.74), (mean[74], sd[74]));
         assert_eq!(at_phase(mean, sd, 0.0), (mean[0], sd[0]));
@@ -462,8 +463,8 @@ mod tests {
 
     #[test]
     fn the_band_note_names_the_speed_as_fully_as_the_room_allows() {
-        assert_eq!(band_note(1.245, 60).unwrap(), "band: right leg; at 1.245 m/s, not speed-matched");
-        assert_eq!(band_note(1.245, 25).unwrap(), "right leg, 1.245 m/s only");
-        assert_eq!(band_note(1.245, 24), None);
+        assert_eq!(band_note(1.2449, 60).unwrap(), "band: right leg, adults at 1.24 m/s");
+        assert_eq!(band_note(1.2449, 20).unwrap(), "right leg, 1.24 m/s");
+        assert_eq!(band_note(1.2449, 18), None);
     }
 }
