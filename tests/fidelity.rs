@@ -4,13 +4,15 @@
 //! read at the walk's speed), and the shapes the calibration set out to give.
 //!
 //! The targets are r >= 0.95, RMS <= 5 deg (ankle <= 4) and >= 80 % of the cycle
-//! inside +-2 SD. Measured 2026-11-25 against the speed-matched references: the shapes (r)
-//! meet them for every joint at every speed; the hip's RMS at every speed but brisk (5.02);
-//! the ankle's from 0.8 to 1.3 m/s; the knee's nowhere (9.3 deg at 1.3 m/s, 53 % of its
-//! cycle outside +-2 SD): too flexed after heel strike and late to extend in terminal swing.
-//! Against the single 1.245 m/s reference used before, the slow walks had read better (knee
-//! 8.1 at 0.8 m/s: the comfortable walk's loading flexion of 16 deg sat nearer the walk's
-//! than the 8 deg people show at 0.8 m/s) and the hip worse. Each bound is the measured value
+//! inside +-2 SD. Measured 2026-11-25 against the speed-matched references, after the
+//! mid-stance drop law of session 12 (the pelvis at mid-stance about as high as the stance
+//! leg reaches): the hip's RMS and r meet them at every speed (3.5-4.6 deg); the ankle's RMS
+//! at every speed but 1.6 m/s and brisk, its r from 1.0 m/s up (0.937 at 0.8 m/s, 0.964
+//! before the drop law); the knee's r everywhere, its share inside +-2 SD at 1.0 m/s and
+//! stroll (84 %), its RMS nowhere (7.5 deg at 1.0 m/s, 7.8 at 1.3): too flexed after heel
+//! strike and late to extend in terminal swing. Against the single 1.245 m/s reference used
+//! before, the slow walks had read better than they were (people at 0.8 m/s flex the knee 8
+//! deg in loading response, not the comfortable walk's 16). Each bound is the measured value
 //! with a small margin: a change that moves the walk away from the norms fails here.
 
 use gaitlab::normative::{self, Comparison, References};
@@ -30,22 +32,25 @@ type Bounds = [(f64, f64, f64); 3];
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // 4.28 / 0.992 / 0; 9.34 / 0.976 / 53; 3.50 / 0.984 / 18.
-        ("configs/default.toml", &[], [(4.6, 0.985, 0.0), (9.7, 0.97, 57.0), (3.8, 0.975, 22.0)]),
-        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 5.00 / 0.988 / 0; 10.49 / 0.971 / 43;
-        // 3.07 / 0.974 / 0.
-        ("configs/stroll.toml", &[], [(5.3, 0.98, 0.0), (10.9, 0.965, 47.0), (3.4, 0.965, 4.0)]),
-        // 1.75 m/s, against the fastest block (1.59 m/s): 5.02 / 0.996 / 0; 12.91 / 0.982 / 73;
-        // 5.88 / 0.968 / 41.
-        ("configs/brisk.toml", &[], [(5.4, 0.99, 0.0), (13.3, 0.975, 77.0), (6.2, 0.96, 45.0)]),
-        // 4.83 / 0.988 / 0; 10.88 / 0.969 / 33; 3.09 / 0.964 / 0.
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(5.1, 0.98, 0.0), (11.3, 0.96, 37.0), (3.4, 0.955, 4.0)]),
-        // 4.55 / 0.992 / 0; 9.97 / 0.970 / 43; 3.30 / 0.965 / 12.
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(4.9, 0.985, 0.0), (10.4, 0.96, 47.0), (3.6, 0.955, 16.0)]),
+        // 3.63 / 0.993 / 0; 7.82 / 0.981 / 37; 2.87 / 0.988 / 16 (before the drop law: 4.28 /
+        // 0.992 / 0; 9.34 / 0.976 / 53; 3.50 / 0.984 / 18).
+        ("configs/default.toml", &[], [(3.9, 0.985, 0.0), (8.2, 0.975, 41.0), (3.1, 0.98, 20.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 3.49 / 0.991 / 0; 8.04 / 0.974 / 16;
+        // 2.55 / 0.952 / 0 (before: 5.00 / 0.988, 10.49 / 0.971 / 43, 3.07 / 0.974).
+        ("configs/stroll.toml", &[], [(3.8, 0.985, 0.0), (8.4, 0.965, 20.0), (2.8, 0.945, 4.0)]),
+        // 1.75 m/s, against the fastest block (1.59 m/s): 4.62 / 0.996 / 0; 12.01 / 0.980 / 73;
+        // 5.48 / 0.970 / 39.
+        ("configs/brisk.toml", &[], [(4.9, 0.99, 0.0), (12.4, 0.975, 77.0), (5.8, 0.96, 43.0)]),
+        // 3.66 / 0.991 / 0; 9.07 / 0.971 / 24; 2.85 / 0.937 / 0 (before: 4.83 / 0.988, 10.88 /
+        // 0.969 / 33, 3.09 / 0.964).
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.9, 0.985, 0.0), (9.5, 0.965, 28.0), (3.1, 0.93, 4.0)]),
+        // 3.57 / 0.992 / 0; 7.50 / 0.979 / 16; 2.50 / 0.963 / 0.
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.9, 0.985, 0.0), (7.9, 0.97, 20.0), (2.8, 0.955, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(4.6, 0.985, 0.0), (9.7, 0.97, 57.0), (3.8, 0.975, 22.0)]),
-        // 4.83 / 0.993 / 0; 11.58 / 0.985 / 75; 5.15 / 0.971 / 43.
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(5.1, 0.985, 0.0), (12.0, 0.975, 79.0), (5.5, 0.96, 47.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(3.9, 0.985, 0.0), (8.2, 0.975, 41.0), (3.1, 0.98, 20.0)]),
+        // 4.18 / 0.993 / 0; 10.19 / 0.982 / 61; 4.52 / 0.976 / 35 (before: 4.83 / 0.993, 11.58 /
+        // 0.985 / 75, 5.15 / 0.971 / 43).
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(4.5, 0.985, 0.0), (10.6, 0.975, 65.0), (4.8, 0.965, 39.0)]),
     ];
     for (config, sets, bounds) in cases {
         let c = compare(config, sets);
@@ -110,7 +115,11 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // trends and the lateral values hold; vertically the slow walks sway too little (the
     // reach guard lowers the mid-stance key of their short steps). Session 11, with the
     // norms' shorter step the guard no longer lowers the fast walks' keys either: vertical
-    // 1.07 / 1.88 / 2.80 / 3.50 cm, as set (2.33 cm per m/s above 1.3 m/s).
+    // 1.07 / 1.88 / 2.80 / 3.50 cm, as set (2.33 cm per m/s above 1.3 m/s). Session 12, with
+    // the pelvis at mid-stance about as high as the stance leg reaches (the drop law, for
+    // the joint curves): 0.56 / 1.17 / 2.49 / 3.50 cm. The trend holds; the slow walks are
+    // further from Orendurff's values than before — the walk's stance leg reaches the
+    // mid-stance pelvis only from 15 cm behind it, where the norms' hip passes over the ankle.
     let mut previous: Option<(f64, f64)> = None;
     for speed in [0.7, 1.0, 1.3, 1.6] {
         let set = format!("walk.speed_mps={speed}");

@@ -479,6 +479,24 @@ pub struct Resolved {
 /// double support and flexed the loading knee 14 deg past the norm.
 pub(crate) const WALK_RATIO_PER_175: f64 = 0.0055;
 
+/// How far below standing hip height the pelvis passes at mid-stance (cm) at `speed_mps`, when
+/// the config does not say: about as high as the stance leg reaches on to its heel rise.
+/// Against the speed-matched norms (data/normative/joint_angles_by_speed.csv) people keep the
+/// hip 0.858-0.859 m from the ankle (99.9 % of reach) from heel strike to 48 % of the cycle,
+/// and every millimetre the walk's pelvis sits lower bends its knee: at 1.0 m/s a drop of 0,
+/// 0.4 and 0.9 cm gives a knee RMS of 7.5, 8.2 and 10.0 deg. The reach guard's bound (below
+/// which a smaller drop changes nothing) is 0 at 0.8 m/s, 0.1 at 1.0, 1.15 at 1.3 and 1.6 at
+/// 1.6; up to 1.3 m/s the law follows it. Above, it rises 2.5 cm per m/s, not the bound's
+/// 1.5: the first full-speed step of a speed-up needs its double support 1.2 cm lower to
+/// reach, and from a mid-stance that high the scheduled 0.8 -> 1.6 m/s walk's pelvis changed
+/// velocity 1.33x as sharply as a steady walk's (1.13x with this slope; 1.6 m/s knee RMS
+/// 10.2 deg against 9.3 on the bound and 11.6 with the earlier 1.5 + 2 (v - 1.3) cm).
+fn midstance_drop_cm(speed_mps: f64) -> f64 {
+    let fast = speed_mps - 1.3;
+    let drop = if fast < 0.0 { 1.1 + 3.5 * fast } else { 1.1 + 2.5 * fast };
+    drop.max(0.0)
+}
+
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):
     ///
@@ -550,7 +568,7 @@ impl WalkParams {
             vertical_range: p.vertical_range_cm.unwrap_or((1.9 + 1.5 * (v - 0.7)).max(2.8 + 2.33 * fast)).max(0.0)
                 / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
-            midstance_drop: p.midstance_drop_cm.unwrap_or((1.5 + 2.0 * fast).max(0.5)) / 100.0,
+            midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
             midstance_offset: p.midstance_offset_cm / 100.0,
             trunk_lean: deg(p.trunk_lean_deg),
             rest_tilt: deg(p.rest_tilt_deg),

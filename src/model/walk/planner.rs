@@ -177,7 +177,18 @@ impl Walker {
             StepKind::Starting => {
                 *self.plan.keys().find(|k| k.kind == KeyKind::MidStance).expect("planned at the start")
             }
-            _ => self.push_step_keys(trailing, leading, strike_phase),
+            StepKind::Steady => self.push_step_keys(trailing, leading, strike_phase),
+            StepKind::Braking | StepKind::Closing => {
+                let ms_before = self.push_step_keys(trailing, leading, strike_phase);
+                // A stop's pelvis comes to rest at quiet-standing height over these feet
+                // (`begin_settle`): a mid-stance key above it, at the walk's full reach, had
+                // the settle's blend carry the hip past the stance leg's reach on stairs.
+                let rest_y = self.rest_over(&leading.flat_ankle(&self.gait.r.dims)).1;
+                if let Some(key) = self.plan.last_of_mut(KeyKind::MidStance) {
+                    key.y = key.y.min(rest_y);
+                }
+                ms_before
+            }
         }
     }
 
@@ -241,12 +252,13 @@ impl Walker {
         let ground = trailing.heel.y.min(leading.heel.y);
         // During a speed-up the double support sinks by the coming ramp step's vertical range
         // when it is the larger (it grows with speed), as the mid-stance key takes its drop.
-        let vertical_range =
-            self.coming_ramp().map_or(r.vertical_range, |next| next.vertical_range.max(r.vertical_range));
+        let (vertical_range, drop) = self.coming_ramp().map_or((r.vertical_range, r.midstance_drop), |next| {
+            (next.vertical_range.max(r.vertical_range), next.midstance_drop.max(r.midstance_drop))
+        });
         PelvisKey {
             phase: strike_phase + 0.5 * (r.toe_off - 0.5),
             x: 0.5 * (ms_before.x + ms_after.x),
-            y: ground + r.dims.standing_hip_height() - r.midstance_drop - vertical_range,
+            y: ground + r.dims.standing_hip_height() - drop - vertical_range,
             kind: KeyKind::DoubleSupport,
             // This step's own average pace, so a change of speed or a stair spreads over the
             // steps it happens in instead of being caught up within one segment.
