@@ -18,7 +18,8 @@
 
 use crate::analysis::Run;
 use crate::error::{Error, Result};
-use crate::model::params::WalkParams;
+use crate::model::params::{TerrainChoice, WalkParams};
+use crate::model::terrain::TerrainKind;
 use crate::report::metrics::Summary;
 use crate::snapshot::measure;
 use std::path::Path;
@@ -36,6 +37,9 @@ pub const SPEED_NORMS_SOURCE: &str =
 /// The built-in spatiotemporal norms by speed: `data/normative/spatiotemporal_by_speed.csv`
 /// (source, licence and derivation beside it).
 pub const BUILT_IN_SPEED_NORMS: &str = include_str!("../data/normative/spatiotemporal_by_speed.csv");
+
+/// Said beside the comparison of a walk off level ground.
+pub const OFF_LEVEL_NOTE: &str = "the walk is not on level ground and the norms are level treadmill walking: the differences include what the terrain asks of the legs";
 
 /// The curves compared: (reference column stem, the walk's curve, compared as a shape).
 const COMPARED: [(&str, &str, bool); 6] = [
@@ -95,6 +99,7 @@ impl References {
                 .ok_or_else(|| bad(header_line + 1, format!("no column `{name}` (columns: {})", columns.join(", "))))
         };
         let speed = column("speed_m_s")?;
+        let pct = column("pct_cycle")?;
         let mut stems = Vec::new();
         for (stem, _, _) in COMPARED {
             stems.push((stem, column(&format!("{stem}_mean_deg"))?, column(&format!("{stem}_sd_deg"))?));
@@ -102,10 +107,22 @@ impl References {
         // (first line of the block, its rows)
         let mut tables: Vec<(usize, Vec<Vec<f64>>)> = Vec::new();
         for (n, line) in rows {
-            let values: std::result::Result<Vec<f64>, _> = line.split(',').map(|v| v.trim().parse::<f64>()).collect();
-            let values = values.map_err(|e| bad(n + 1, format!("not a number: {e}")))?;
-            if values.len() != columns.len() || values.iter().any(|v| !v.is_finite()) {
-                return Err(bad(n + 1, format!("expected {} finite numbers", columns.len())));
+            let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+            if fields.len() != columns.len() {
+                return Err(bad(n + 1, format!("{} values; expected {}, one per column", fields.len(), columns.len())));
+            }
+            let mut values = Vec::with_capacity(fields.len());
+            for (field, name) in fields.iter().zip(&columns) {
+                match field.parse::<f64>() {
+                    Ok(v) if v.is_finite() => values.push(v),
+                    _ => return Err(bad(n + 1, format!("`{name}` is `{field}`, not a finite number"))),
+                }
+            }
+            if let Some(&(stem, _, sd)) = stems.iter().find(|&&(_, _, sd)| values[sd] < 0.0) {
+                return Err(bad(n + 1, format!("`{stem}_sd_deg` is {}; an SD is 0 or more", values[sd])));
+            }
+            if values[speed] <= 0.0 {
+                return Err(bad(n + 1, format!("`speed_m_s` is {}; a walking speed is above 0", values[speed])));
             }
             match tables.last_mut() {
                 Some((_, table)) if table[0][speed] == values[speed] => table.push(values),
@@ -120,6 +137,13 @@ impl References {
         }
         let mut blocks = Vec::new();
         for (line, table) in tables {
+            // The rows must be the cycle's percents in order: a block's rows read by position.
+            if let Some(i) = (0..table.len()).find(|&i| table[i][pct] != i as f64) {
+                return Err(bad(
+                    line + i,
+                    format!("`pct_cycle` is {}; a block's rows run 0, 1, ... 100 in order", table[i][pct]),
+                ));
+            }
             if table.len() != 101 {
                 return Err(bad(
                     line,
@@ -175,14 +199,15 @@ fn bracket(speeds: &[f64], speed_mps: f64) -> (usize, usize, f64) {
 }
 
 /// Which blocks (`from`, `to` m/s) a norm at `speed_mps` came from, in words: "the 1.232 m/s
-/// block", "interpolated between the 1.232 and 1.417 m/s blocks", or the end block with why.
+/// block", "interpolated between the 1.232 and 1.417 m/s blocks", or "the 1.417 m/s block,
+/// the fastest (the walk is faster; not extrapolated)".
 fn blocks_used(speed_mps: f64, (from, to): (f64, f64)) -> String {
     if from < to {
         format!("interpolated between the {from:.3} and {to:.3} m/s blocks")
     } else if speed_mps > to + 1e-9 {
-        format!("the fastest block, {to:.3} m/s (the walk is faster; not extrapolated)")
+        format!("the {to:.3} m/s block, the fastest (the walk is faster; not extrapolated)")
     } else if speed_mps < from - 1e-9 {
-        format!("the slowest block, {from:.3} m/s (the walk is slower; not extrapolated)")
+        format!("the {from:.3} m/s block, the slowest (the walk is slower; not extrapolated)")
     } else {
         format!("the {from:.3} m/s block")
     }
@@ -346,6 +371,9 @@ pub struct Comparison {
     /// Cadence and stride norms at the walk's speed (the built-in table by speed; no stance
     /// norm by speed is available).
     pub spatiotemporal_norms: NormsAtSpeed,
+    /// The walk was on level ground, as the norms' treadmill walking was; false on stairs,
+    /// slopes and rough ground, where the differences include what the terrain asks.
+    pub level_ground: bool,
     /// The part of the walk compared, for a walk that was not steady throughout (its pace
     /// changed or it stopped): the plateau the snapshot measured
     /// ([`crate::report::metrics::steady_window`]); `None` for a walk steady throughout.
@@ -377,7 +405,9 @@ fn range(v: &[f64]) -> f64 {
 /// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
 /// every 2 % of the right gait cycle.
 pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Result<Comparison> {
-    Ok(compare_measured(&measure::measure(path, params)?, reference))
+    let mut c = compare_measured(&measure::measure(path, params)?, reference);
+    c.level_ground = params.terrain.kind == TerrainChoice::Flat;
+    Ok(c)
 }
 
 /// A walk already recorded and summarised (the report's: `cycles` of the config at `path`)
@@ -389,7 +419,9 @@ pub fn compare_recorded(
     summary: &Summary,
     reference: &References,
 ) -> Result<Comparison> {
-    Ok(compare_measured(&measure::recorded(path, cycles, run, summary)?, reference))
+    let mut c = compare_measured(&measure::recorded(path, cycles, run, summary)?, reference);
+    c.level_ground = matches!(run.terrain.kind(), TerrainKind::Flat);
+    Ok(c)
 }
 
 /// A walk already measured against `references` at the speed it walked (the fit measures
@@ -445,6 +477,7 @@ pub fn compare_measured(walk: &measure::Snapshot, references: &References) -> Co
         curves,
         spatiotemporal,
         spatiotemporal_norms,
+        level_ground: true,
         steady_part: walk.steady_part.clone(),
     }
 }
@@ -502,7 +535,10 @@ mod tests {
         assert_eq!(refs.at(0.3).curves, refs.blocks[0].curves);
         assert_eq!(refs.at(2.5).curves, refs.blocks[4].curves);
         assert_eq!(refs.at(2.5).speed_mps, speeds[4]);
-        assert!(refs.at(2.5).blocks_used(2.5).contains("the walk is faster; not extrapolated"));
+        assert_eq!(
+            refs.at(2.5).blocks_used(2.5),
+            format!("the {:.3} m/s block, the fastest (the walk is faster; not extrapolated)", speeds[4])
+        );
         assert_eq!(refs.at(f64::NAN).curves, refs.blocks[0].curves);
     }
 
@@ -517,12 +553,30 @@ mod tests {
         let mut bad = COMFORTABLE.replace("hip_flex_sd_deg", "hip_sd");
         assert!(References::parse(&bad, "x.csv").unwrap_err().to_string().contains("no column `hip_flex_sd_deg`"));
         bad = COMFORTABLE.replacen("0,1.245,29.87", "0,1.245,nan", 1);
-        assert!(References::parse(&bad, "x.csv").unwrap_err().to_string().contains("finite"));
-        // A block one row short, and blocks out of order, name their first line.
+        let e = References::parse(&bad, "x.csv").unwrap_err().to_string();
+        assert!(e.contains("`hip_flex_mean_deg` is `nan`, not a finite number"), "{e}");
+        // Rows out of order, a negative SD, a speed of 0: each refused at its line.
+        let row = |pct: usize| COMFORTABLE.lines().find(|l| l.starts_with(&format!("{pct},"))).unwrap().to_string();
+        let (r3, r4) = (row(3), row(4));
+        bad = COMFORTABLE.replacen(&r3, "SWAP", 1).replacen(&r4, &r3, 1).replacen("SWAP", &r4, 1);
+        let e = References::parse(&bad, "x.csv").unwrap_err().to_string();
+        assert!(e.contains("`pct_cycle` is 4; a block's rows run 0, 1, ... 100 in order"), "{e}");
+        let header_line = COMFORTABLE.lines().position(|l| l.starts_with("pct_cycle")).unwrap();
+        assert!(e.starts_with(&format!("x.csv:{}:", header_line + 5)), "{e}");
+        let fields: Vec<&str> = r3.split(',').collect();
+        let negative_sd = format!("{},{},{},-{}", fields[0], fields[1], fields[2], fields[3..].join(","));
+        bad = COMFORTABLE.replacen(&r3, &negative_sd, 1);
+        let e = References::parse(&bad, "x.csv").unwrap_err().to_string();
+        assert!(e.contains("`hip_flex_sd_deg` is -") && e.contains("an SD is 0 or more"), "{e}");
+        bad = COMFORTABLE.replace(",1.245,", ",0,");
+        let e = References::parse(&bad, "x.csv").unwrap_err().to_string();
+        assert!(e.contains("`speed_m_s` is 0; a walking speed is above 0"), "{e}");
+        // A block one row short (its 100 % row gone), and blocks out of order, name their first
+        // line.
         let lines: Vec<&str> = BUILT_IN.lines().collect();
         let first_row = lines.iter().position(|l| l.starts_with("0,")).unwrap();
         let short: String =
-            lines.iter().enumerate().filter(|(i, _)| *i != first_row + 5).map(|(_, l)| format!("{l}\n")).collect();
+            lines.iter().enumerate().filter(|(i, _)| *i != first_row + 100).map(|(_, l)| format!("{l}\n")).collect();
         let e = References::parse(&short, "s.csv").unwrap_err().to_string();
         assert!(e.starts_with(&format!("s.csv:{}:", first_row + 1)) && e.contains("100 rows at"), "{e}");
         let header = lines[first_row - 1];

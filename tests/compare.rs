@@ -87,7 +87,12 @@ fn a_bad_reference_is_refused_with_its_place() {
     let o = gaitlab(&["compare", "configs/default.toml", "--reference", bad.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);
-    assert!(e.contains("ref.csv:2:") && e.contains("not a number"), "{e}");
+    assert!(e.contains("ref.csv:2:") && e.contains("`hip_flex_mean_deg` is `oops`, not a finite number"), "{e}");
+    // A reference that is not there is named as a reference, not as a config.
+    let o = gaitlab(&["compare", "configs/default.toml", "--reference", dir.join("none.csv").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("none.csv") && e.contains("cannot read the reference"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -124,7 +129,7 @@ fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
         ),
         (
             "configs/brisk.toml",
-            "the fastest block, 1.417 m/s (the walk is faster; not extrapolated)",
+            "the 1.417 m/s block, the fastest (the walk is faster; not extrapolated)",
             "interpolated between the 1.593 and 1.799 m/s blocks",
         ),
     ] {
@@ -146,8 +151,26 @@ fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
         let norms_line = table.lines().nth(2).unwrap();
         assert!(norms_line.starts_with("# norms at ") && norms_line.contains(blocks), "{config}: {table}");
         assert!(
-            table.lines().next().unwrap().ends_with(&format!("({curves}); right gait cycle, every 2 %")),
+            table.lines().next().unwrap().ends_with(&format!(", {curves}; right gait cycle, every 2 %")),
             "{table}"
         );
+    }
+}
+
+/// A walk off level ground is compared with level treadmill norms: the table says so, and
+/// the JSON lines carry it; a level walk's do not.
+#[test]
+fn a_walk_off_level_ground_says_the_norms_are_level_walking() {
+    for (config, level) in [("configs/stairs_up.toml", false), ("configs/default.toml", true)] {
+        let table = String::from_utf8_lossy(&gaitlab(&["compare", config]).stdout).to_string();
+        assert_eq!(
+            table.contains("# the walk is not on level ground and the norms are level treadmill walking"),
+            !level,
+            "{table}"
+        );
+        let o = gaitlab(&["compare", config, "--json"]);
+        let first: serde_json::Value =
+            serde_json::from_str(String::from_utf8_lossy(&o.stdout).lines().next().unwrap()).unwrap();
+        assert_eq!(first["level_ground"], level, "{config}");
     }
 }

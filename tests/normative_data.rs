@@ -90,7 +90,7 @@ fn a_walks_speed_takes_the_blocks_around_it() {
     assert!((mid.cadence_spm.0 - (115.8 + 123.1) / 2.0).abs() < 1e-9, "{mid:?}");
     assert!((mid.stride_length_m.1 - (0.122 + 0.134) / 2.0).abs() < 1e-9, "{mid:?}");
     assert_eq!(norms.at(1.6).cadence_spm, (123.1, 6.7), "the fastest block, unchanged");
-    assert!(norms.at(1.6).blocks_used().contains("the fastest block, 1.417 m/s"));
+    assert!(norms.at(1.6).blocks_used().contains("the 1.417 m/s block, the fastest"));
     assert!(norms.at(0.8).blocks_used().contains("between the 0.678 and 0.862 m/s blocks"));
     assert!(norms.at(f64::NAN).cadence_spm.0.is_finite(), "never NaN norms");
 }

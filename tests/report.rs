@@ -309,13 +309,13 @@ fn the_summary_compares_the_walk_with_measured_gait_as_compare_does() {
     assert!(section.contains(&format!("`brisk` at {speed:.3} m/s against Fukuchi")), "{section}");
     // The joint-angle norms at the walk's own speed, between the two blocks around it.
     assert!(
-        section.contains(&format!("at {speed:.3} m/s (interpolated between the 1.593 and 1.799 m/s blocks)")),
+        section.contains(&format!("at {speed:.3} m/s against Fukuchi, Fukuchi & Duarte 2018 (young adults, treadmill, by speed, CC BY 4.0), interpolated between the 1.593 and 1.799 m/s blocks,")),
         "the reference's speed: {section}"
     );
     assert!(!section.contains("The table is for"), "a lone walk needs no such note");
     // brisk (1.75 m/s) is faster than the fastest block of spatiotemporal norms: it says so.
     let norm = lines[0]["cadence_norm_spm"].as_f64().unwrap();
-    assert!(section.contains(&format!("at the walk's {speed:.3} m/s (the fastest block, 1.417 m/s")), "{section}");
+    assert!(section.contains(&format!("at the walk's {speed:.3} m/s (the 1.417 m/s block, the fastest")), "{section}");
     assert!(
         section.contains(&format!(
             "| cadence (steps/min) | {:.1} | {norm:.1} ± ",

@@ -129,7 +129,7 @@ fn the_band_names_the_walks_speed_where_the_panel_has_room() {
     let wide = text(&render(&app, 160, 48));
     assert!(wide.contains("band: right leg, adults at 1.30 m/s"), "{wide}");
     let narrow = text(&render(&app, 80, 24));
-    assert!(narrow.contains("right leg, 1.30 m/s"), "{narrow}");
+    assert!(narrow.contains("adults 1.30 m/s"), "{narrow}");
 }
 
 #[test]

@@ -68,7 +68,7 @@ pub(super) fn references(file: Option<&std::path::Path>) -> Result<(crate::norma
     use crate::normative::{self, References};
     Ok(match file {
         Some(file) => {
-            let text = crate::config::read_source(file)?;
+            let text = crate::config::read_text(file, "reference")?;
             (References::parse(&text, &file.display().to_string())?, file.display().to_string())
         }
         None => (References::built_in(), normative::BUILT_IN_SOURCE.to_string()),

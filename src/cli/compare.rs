@@ -22,12 +22,14 @@ pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[Str
 fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -> io::Result<()> {
     writeln!(
         out,
-        "# {} at {:.3} m/s against {source} at {:.3} m/s ({}); right gait cycle, every 2 %",
+        "# {} at {:.3} m/s against {source}, {}; right gait cycle, every 2 %",
         path.display(),
         c.speed_mps,
-        c.reference_speed_mps,
         c.reference_blocks()
     )?;
+    if !c.level_ground {
+        writeln!(out, "# {}", normative::OFF_LEVEL_NOTE)?;
+    }
     if let Some(part) = &c.steady_part {
         writeln!(
             out,
@@ -103,6 +105,7 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         line["reference_speed_mps"] = c.reference_speed_mps.into();
         line["reference_from_block_mps"] = c.reference_blocks_mps.0.into();
         line["reference_to_block_mps"] = c.reference_blocks_mps.1.into();
+        line["level_ground"] = c.level_ground.into();
         for (key, value) in c.spatiotemporal {
             line[key] = value.into();
         }

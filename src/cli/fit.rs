@@ -69,7 +69,7 @@ fn fitted_config(
     let body = config::edit::edited_text(text, &result.params, &keys).map_err(Error::Usage)?;
     let (before, after) = (rms_line(&result.comparison.0), rms_line(&result.comparison.1));
     Ok(format!(
-        "# Fitted by `gaitlab fit` against {source} at {:.3} m/s ({}).\n\
+        "# Fitted by `gaitlab fit` against {source} at {:.3} m/s, {}.\n\
          # Hip / knee / ankle RMS difference (deg): {before} before, {after} after ({} walks).\n\
          # Keys fitted: {}.\n\n{body}",
         result.comparison.0.reference_speed_mps,
@@ -94,10 +94,9 @@ fn write_table(
     let (before, after) = &r.comparison;
     writeln!(
         out,
-        "# {} at {:.3} m/s against {source} at {:.3} m/s ({}): {} walks in {seconds:.1} s",
+        "# {} at {:.3} m/s against {source}, {}: {} walks in {seconds:.1} s",
         path.display(),
         before.speed_mps,
-        before.reference_speed_mps,
         before.reference_blocks(),
         r.evaluations
     )?;

@@ -19,7 +19,7 @@ pub use checks::{check_curve, cross_check};
 use errors::char_floor;
 pub(crate) use errors::line_col;
 pub use errors::{ConfigError, ConfigErrors};
-pub use source::{MAX_CONFIG_BYTES, READ_DEADLINE, decode_source, read_source};
+pub use source::{MAX_CONFIG_BYTES, READ_DEADLINE, decode_source, read_source, read_text};
 
 use crate::model::gait_curves::CurveName;
 use crate::model::params::WalkParams;

@@ -69,33 +69,42 @@ pub fn read_source(path: &Path) -> Result<String, ConfigErrors> {
     read_source_within(path, MAX_CONFIG_BYTES, READ_DEADLINE)
 }
 
+/// [`read_source`] for another text input (`what`, e.g. "reference"), whose refusals name it.
+pub fn read_text(path: &Path, what: &str) -> Result<String, ConfigErrors> {
+    read_text_within(path, MAX_CONFIG_BYTES, READ_DEADLINE, what)
+}
+
 /// [`read_source`] with another size limit and deadline.
 pub(crate) fn read_source_within(path: &Path, limit: u64, deadline: Duration) -> Result<String, ConfigErrors> {
+    read_text_within(path, limit, deadline, "config")
+}
+
+fn read_text_within(path: &Path, limit: u64, deadline: Duration, what: &str) -> Result<String, ConfigErrors> {
     let label = path.display().to_string();
-    let meta = std::fs::metadata(path).map_err(|e| refuse(&label, format!("cannot read the config: {e}")))?;
+    let meta = std::fs::metadata(path).map_err(|e| refuse(&label, format!("cannot read the {what}: {e}")))?;
     if meta.is_dir() {
-        return Err(refuse(&label, "is a folder, not a config file".into()));
+        return Err(refuse(&label, format!("is a folder, not a {what} file")));
     }
     let kind = kind_of(&meta);
     if meta.is_file() && meta.len() > limit {
         return Err(refuse(
             &label,
-            format!("the file is {}, over the {} limit for a config file", size_text(meta.len()), limit_text(limit)),
+            format!("the file is {}, over the {} limit for a {what} file", size_text(meta.len()), limit_text(limit)),
         ));
     }
     let bytes = read_on_helper(path.to_path_buf(), limit, deadline).map_err(|failure| {
         refuse(
             &label,
             match failure {
-                Failure::Io(e) => format!("cannot read the config: {e}"),
+                Failure::Io(e) => format!("cannot read the {what}: {e}"),
                 Failure::TooLong => {
-                    format!("more than the {} limit for a config file came from this {kind}", limit_text(limit))
+                    format!("more than the {} limit for a {what} file came from this {kind}", limit_text(limit))
                 }
                 Failure::Deadline => format!(
-                    "this {kind} did not come to an end within {} s (nothing writing to it?); a config must be readable at once",
+                    "this {kind} did not come to an end within {} s (nothing writing to it?); a {what} must be readable at once",
                     deadline.as_secs_f64()
                 ),
-                Failure::NoThread(e) => format!("cannot read the config: no thread to read it on: {e}"),
+                Failure::NoThread(e) => format!("cannot read the {what}: no thread to read it on: {e}"),
             },
         )
     })?;

@@ -515,8 +515,9 @@ impl WalkParams {
     ///   walk's reach guard walks less anyway), lateral range 6.9 cm at
     ///   0.7 m/s falling 3.44 cm per m/s (×sway);
     ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
-    /// - mid-stance drop 1.5 cm at 1.3 m/s, 2 cm more per m/s faster, so long fast steps still
-    ///   reach (the thesis lowers the pelvis with speed too);
+    /// - mid-stance drop 1.1 cm at 1.3 m/s, 3.5 cm less per m/s slower (none from 0.99 m/s
+    ///   down) and 2.5 cm more per m/s faster: about as high as the stance leg reaches
+    ///   (`midstance_drop_cm`, above);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
     #[must_use]
     pub fn resolve(&self) -> Resolved {

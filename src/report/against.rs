@@ -65,7 +65,7 @@ fn label(stem: &str) -> &str {
 pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Comparison) {
     let _ = write!(
         md,
-        "\n## Against measured gait\n\n`{name}` at {:.3} m/s against {} at {:.3} m/s ({}), over the mean \
+        "\n## Against measured gait\n\n`{name}` at {:.3} m/s against {}, {}, over the mean \
          steady right gait cycle every 2 % (as `gaitlab compare` gives it).{} Difference = walk − \
          reference; r: Pearson r of the two mean curves (the shape, blind to offset and scale); \
          outside ±1 / ±2 SD: share of the cycle beyond the reference's mean ± 1 / 2 SD; range of \
@@ -77,7 +77,6 @@ pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Compariso
          |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
         c.speed_mps,
         normative::BUILT_IN_SOURCE,
-        c.reference_speed_mps,
         c.reference_blocks(),
         compared_note(name, compared, c),
     );
@@ -93,6 +92,11 @@ fn compared_note(name: &str, compared: bool, c: &Comparison) -> String {
     let mut note = String::new();
     if let Some(part) = &c.steady_part {
         let _ = write!(note, " The walk's pace changed: compared on its steady part, {part} (see *Pace*).");
+    }
+    if !c.level_ground {
+        let mut off_level = normative::OFF_LEVEL_NOTE.to_string();
+        off_level[..1].make_ascii_uppercase();
+        let _ = write!(note, " {off_level}.");
     }
     if compared {
         let _ = write!(note, " The table is for `{name}`, the report's own walk, not the compared ones.");

@@ -210,8 +210,15 @@ impl App {
     /// it), for the joint panel's band; `None` with the band off.
     #[must_use]
     pub(crate) fn norms_band(&self) -> Option<Reference> {
+        self.references.as_ref().filter(|_| self.norms).map(|refs| refs.at(self.walk_speed_mps()))
+    }
+
+    /// The speed the walk walks now (m/s): its stride over its cycle, as a schedule or an
+    /// edit left them.
+    #[must_use]
+    pub(crate) fn walk_speed_mps(&self) -> f64 {
         let r = self.walker.resolved();
-        self.references.as_ref().filter(|_| self.norms).map(|refs| refs.at(r.stride_m / r.cycle_s))
+        r.stride_m / r.cycle_s
     }
 
     /// The file name shown in the status bar.

@@ -298,11 +298,22 @@ fn at_phase(mean: &[f64], sd: &[f64], phase: f64) -> (f64, f64) {
 }
 
 /// What the band is, said beside the hip trace's name as fully as the row allows: the
-/// right leg's cycle, read at the walk's own speed.
-fn band_note(speed_mps: f64, room: usize) -> Option<String> {
-    [format!("band: right leg, adults at {speed_mps:.2} m/s"), format!("right leg, {speed_mps:.2} m/s")]
-        .into_iter()
-        .find(|n| n.chars().count() <= room)
+/// right leg's cycle, the norms at `norms_mps`, and whether the walk (at `walk_mps`) is
+/// beyond the norms' fastest or slowest block, which the band then stays at.
+fn band_note(norms_mps: f64, walk_mps: f64, room: usize) -> Option<String> {
+    let beyond = if walk_mps > norms_mps + 1e-6 {
+        (" (their fastest)", " max")
+    } else if walk_mps < norms_mps - 1e-6 {
+        (" (their slowest)", " min")
+    } else {
+        ("", "")
+    };
+    [
+        format!("band: right leg, adults at {norms_mps:.2} m/s{}", beyond.0),
+        format!("adults {norms_mps:.2} m/s{}", beyond.1),
+    ]
+    .into_iter()
+    .find(|n| n.chars().count() <= room)
 }
 
 /// Hip, knee and ankle angles of both legs over the last cycles; with the norms on, the
@@ -342,7 +353,7 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
             });
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1).chain(band.iter().flat_map(|b| [b.1, b.2])));
         let room = usize::from(inner.width).saturating_sub(name.chars().count() + 2);
-        let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, room));
+        let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, app.walk_speed_mps(), room));
         let trace = Trace { name, note, lines: [(&right, RIGHT), (&left, LEFT)], band: &band };
         draw_trace(f, rows[j], &trace, [t0, t1], y, marker);
     }
@@ -463,8 +474,11 @@ mod tests {
 
     #[test]
     fn the_band_note_names_the_speed_as_fully_as_the_room_allows() {
-        assert_eq!(band_note(1.2449, 60).unwrap(), "band: right leg, adults at 1.24 m/s");
-        assert_eq!(band_note(1.2449, 20).unwrap(), "right leg, 1.24 m/s");
-        assert_eq!(band_note(1.2449, 18), None);
+        assert_eq!(band_note(1.2449, 1.2449, 60).unwrap(), "band: right leg, adults at 1.24 m/s");
+        assert_eq!(band_note(1.2449, 1.2449, 20).unwrap(), "adults 1.24 m/s");
+        assert_eq!(band_note(1.2449, 1.2449, 14), None);
+        // A walk beyond the norms' ends: the band stays at the end block, and says so.
+        assert_eq!(band_note(1.799, 2.0, 60).unwrap(), "band: right leg, adults at 1.80 m/s (their fastest)");
+        assert_eq!(band_note(0.796, 0.5, 20).unwrap(), "adults 0.80 m/s min");
     }
 }
