@@ -1,19 +1,23 @@
 //! The walk against measured human gait (issue 12): a ratchet on `gaitlab compare`'s figures
 //! for the shipped speeds, against the speed-matched references (data/normative/
-//! joint_angles_by_speed.csv: young adults' treadmill trials at 0.80 / 1.00 / 1.30 / 1.59 m/s,
-//! read at the walk's speed), and the shapes the calibration set out to give.
+//! joint_angles_by_speed.csv: young adults' treadmill trials at 0.80 / 1.00 / 1.30 / 1.59 /
+//! 1.80 m/s, read at the walk's speed), and the shapes the calibration set out to give.
 //!
 //! The issue's targets are r >= 0.95, RMS <= 5 deg (ankle <= 4) and >= 80 % of the cycle
 //! inside +-2 SD. Measured 2026-11-25 against the speed-matched references, after the
 //! mid-stance drop law of session 12 (the pelvis at mid-stance about as high as the stance
-//! leg reaches): the hip's RMS and r meet them at every speed (3.5-4.6 deg); the ankle's RMS
-//! at every speed but 1.6 m/s and brisk (1.75 m/s, read between the 1.59 and 1.80 m/s blocks), its r from 1.0 m/s up (0.937 at 0.8 m/s, 0.964
-//! before the drop law); the knee's r everywhere, its share inside +-2 SD at 1.0 m/s and
-//! stroll (84 %), its RMS nowhere (7.5 deg at 1.0 m/s, 7.8 at 1.3): too flexed after heel
-//! strike and late to extend in terminal swing. Against the single 1.245 m/s reference used
-//! before, the slow walks had read better than they were (people at 0.8 m/s flex the knee 8
-//! deg in loading response, not the comfortable walk's 16). Each bound is the measured value
-//! with a small margin: a change that moves the walk away from the norms fails here.
+//! leg reaches) and a heel-height knot at 0.88 of the swing:
+//! - the hip's RMS and r meet them at every speed (3.3-4.0 deg);
+//! - the ankle's RMS at every speed but 1.6 m/s and brisk (1.75 m/s); its r from 1.0 m/s up
+//!   (0.937 at 0.8 m/s, 0.964 before the drop law);
+//! - the knee's r everywhere, its share inside +-2 SD at 1.0 m/s and stroll (84 %), its RMS
+//!   nowhere (7.2 deg at 1.0 m/s, 7.6 at 1.3): too flexed after heel strike and late to
+//!   extend in terminal swing.
+//!
+//! Against the single 1.245 m/s reference used before, the slow walks had read better than
+//! they were (people at 0.8 m/s flex the knee 8 deg in loading response, not the comfortable
+//! walk's 16). Each bound is the measured value with a small margin: a change that moves the
+//! walk away from the norms fails here.
 
 use gaitlab::normative::{self, Comparison, References};
 use std::path::Path;
@@ -32,25 +36,25 @@ type Bounds = [(f64, f64, f64); 3];
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // 3.63 / 0.993 / 0; 7.82 / 0.981 / 37; 2.87 / 0.988 / 16 (before the drop law: 4.28 /
-        // 0.992 / 0; 9.34 / 0.976 / 53; 3.50 / 0.984 / 18).
-        ("configs/default.toml", &[], [(3.9, 0.985, 0.0), (8.2, 0.975, 41.0), (3.1, 0.98, 20.0)]),
-        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 3.49 / 0.991 / 0; 8.04 / 0.974 / 16;
+        // 3.39 / 0.994 / 0; 7.57 / 0.982 / 35; 2.87 / 0.988 / 16 (before the drop law and the
+        // heel knot at 0.88 of the swing: 4.28 / 0.992 / 0; 9.34 / 0.976 / 53; 3.50 / 0.984 / 18).
+        ("configs/default.toml", &[], [(3.7, 0.99, 0.0), (7.9, 0.975, 39.0), (3.1, 0.98, 20.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 3.31 / 0.992 / 0; 7.75 / 0.978 / 16;
         // 2.55 / 0.952 / 0 (before: 5.00 / 0.988, 10.49 / 0.971 / 43, 3.07 / 0.974).
-        ("configs/stroll.toml", &[], [(3.8, 0.985, 0.0), (8.4, 0.965, 20.0), (2.8, 0.945, 4.0)]),
-        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 3.97 / 0.995 / 0; 11.33 / 0.984 / 63;
+        ("configs/stroll.toml", &[], [(3.6, 0.985, 0.0), (8.1, 0.97, 20.0), (2.8, 0.945, 4.0)]),
+        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 3.85 / 0.996 / 0; 11.22 / 0.984 / 61;
         // 5.42 / 0.966 / 37.
-        ("configs/brisk.toml", &[], [(4.3, 0.99, 0.0), (11.7, 0.975, 67.0), (5.7, 0.96, 41.0)]),
-        // 3.66 / 0.991 / 0; 9.07 / 0.971 / 24; 2.85 / 0.937 / 0 (before: 4.83 / 0.988, 10.88 /
+        ("configs/brisk.toml", &[], [(4.2, 0.99, 0.0), (11.6, 0.975, 65.0), (5.7, 0.96, 41.0)]),
+        // 3.54 / 0.991 / 0; 8.88 / 0.974 / 24; 2.85 / 0.937 / 0 (before: 4.83 / 0.988, 10.88 /
         // 0.969 / 33, 3.09 / 0.964).
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.9, 0.985, 0.0), (9.5, 0.965, 28.0), (3.1, 0.93, 4.0)]),
-        // 3.57 / 0.992 / 0; 7.50 / 0.979 / 16; 2.50 / 0.963 / 0.
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.9, 0.985, 0.0), (7.9, 0.97, 20.0), (2.8, 0.955, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.8, 0.985, 0.0), (9.3, 0.965, 28.0), (3.1, 0.93, 4.0)]),
+        // 3.34 / 0.993 / 0; 7.15 / 0.983 / 16; 2.50 / 0.963 / 0.
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.7, 0.985, 0.0), (7.5, 0.975, 20.0), (2.8, 0.955, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(3.9, 0.985, 0.0), (8.2, 0.975, 41.0), (3.1, 0.98, 20.0)]),
-        // 4.15 / 0.993 / 0; 10.16 / 0.982 / 61; 4.53 / 0.975 / 35 (before the drop law, against
-        // the 1.593 m/s block alone: 4.83 / 0.993, 11.58 / 0.985 / 75, 5.15 / 0.971 / 43).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(4.5, 0.985, 0.0), (10.6, 0.975, 65.0), (4.8, 0.965, 39.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(3.7, 0.99, 0.0), (7.9, 0.975, 39.0), (3.1, 0.98, 20.0)]),
+        // 4.01 / 0.994 / 0; 10.01 / 0.983 / 61; 4.53 / 0.975 / 35 (before, against the 1.593 m/s
+        // block alone: 4.83 / 0.993, 11.58 / 0.985 / 75, 5.15 / 0.971 / 43).
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(4.3, 0.99, 0.0), (10.4, 0.975, 65.0), (4.8, 0.965, 39.0)]),
     ];
     for (config, sets, bounds) in cases {
         let c = compare(config, sets);

@@ -187,7 +187,7 @@ fn keys_select_a_point_and_the_arrows_move_it_until_esc() {
     // y by 1/100 of the curve's valid range (0 to 0.5 m), x by 0.01.
     assert!((after[6].1 - before[6].1 - 0.005).abs() < 1e-12 && (after[6].0 - before[6].0 - 0.01).abs() < 1e-12);
     assert_eq!(app.selected, selected, "the arrows moved the point, not the parameter selection");
-    assert!(app.message.as_deref().unwrap_or("").contains("join 6/12 of swing_heel_height"), "{:?}", app.message);
+    assert!(app.message.as_deref().unwrap_or("").contains("join 6/15 of swing_heel_height"), "{:?}", app.message);
     // Two edits, undone one at a time.
     key(&mut app, KeyCode::Char('u'));
     assert!((app.design_points(map.name)[6].0 - before[6].0).abs() < 1e-12);
