@@ -204,3 +204,17 @@ fn the_status_line_keeps_the_pace_message_whole_at_80_columns_and_cuts_it_only_w
     assert_walked_cleanly();
     std::fs::remove_dir_all(std::env::temp_dir().join(format!("gaitlab-status-{}", std::process::id()))).ok();
 }
+
+/// A press moves the speed by 0.1 m/s from wherever it is: from 1.75 m/s, `+` asks 1.85 and
+/// `-` then 1.75 (rounded to the 0.1 grid they asked 1.9 and 1.6).
+#[test]
+fn plus_and_minus_step_by_a_tenth_from_any_speed() {
+    let mut app = load_app(None, &["walk.speed_mps=1.75".to_string()]).unwrap();
+    walk(&mut app, 1.0);
+    key(&mut app, '+');
+    assert_eq!(app.params.walk.speed_mps, 1.85);
+    assert!(app.message.as_deref().unwrap_or_default().contains("walk.speed_mps = 1.85"), "{:?}", app.message);
+    key(&mut app, '-');
+    key(&mut app, '-');
+    assert_eq!(app.params.walk.speed_mps, 1.65);
+}

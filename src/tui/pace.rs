@@ -52,8 +52,10 @@ impl App {
         };
         let sign = if action == Action::PaceUp { 1.0 } else { -1.0 };
         let speed = self.params.walk.speed_mps;
-        // Rounded to the step so repeated presses land on 1.3, 1.4, ... not 1.4000000000000001.
-        let to = ((speed + sign * PACE_STEP_MPS) / PACE_STEP_MPS).round() * PACE_STEP_MPS;
+        // Rounded to the speed's own resolution (0.01 m/s) so repeated presses land on 1.3,
+        // 1.4, ... not 1.4000000000000001; rounded to the 0.1 step, a press from 1.75 m/s went
+        // to 1.9 and back to 1.6.
+        let to = ((speed + sign * PACE_STEP_MPS) * 100.0).round() / 100.0;
         let to = to.clamp(low, high);
         if (to - speed).abs() < 1e-9 {
             self.message =
@@ -63,13 +65,13 @@ impl App {
         let mut params = self.params.clone();
         params.walk.speed_mps = to;
         let before = std::mem::replace(&mut self.params, params.clone());
-        self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {to:.1}") });
+        self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {to}") });
         self.redo.clear();
         self.walker.request_speed(to);
         self.message = Some(if self.walker.walk_state() == WalkState::Standing {
-            format!("walk.speed_mps = {to:.1}: the speed w sets off at")
+            format!("walk.speed_mps = {to}: the speed w sets off at")
         } else {
-            format!("walk.speed_mps = {to:.1}, reached over two steps")
+            format!("walk.speed_mps = {to}, reached over two steps")
         });
     }
 }
