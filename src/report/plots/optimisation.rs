@@ -148,7 +148,10 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         plans.iter().filter_map(|p| p.optimisation.chosen.cost.map(|c| (p.step as f64, c))).collect();
     let fixed: Vec<(f64, f64)> =
         plans.iter().filter_map(|p| p.optimisation.fixed_rule.cost.map(|c| (p.step as f64, c))).collect();
-    let y = y_range(&[chosen.as_slice(), fixed.as_slice()]);
+    // Headroom above the costs for the legend: placed by plotters beside them, it covered the
+    // last steps of a flat series (stroll, default).
+    let data = y_range(&[chosen.as_slice(), fixed.as_slice()]);
+    let y = data.start..data.end + 0.35 * (data.end - data.start);
     // Where the optimiser keeps the fixed rule the two lines are one; say so, or the fixed
     // rule's line looks missing.
     let caption = match kept_fixed_rule(plans) {
@@ -187,7 +190,7 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
             }
         }
     }
-    draw_legend(&mut chart, 18, None)?;
+    draw_legend(&mut chart, 18, Some(SeriesLabelPosition::UpperRight))?;
     Ok(())
 }
 
