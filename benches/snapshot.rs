@@ -25,11 +25,11 @@ fn normative(c: &mut Criterion) {
     let mut group = c.benchmark_group("normative");
     group.sample_size(10);
     group.bench_function("compare_default_10_cycles", |b| {
-        b.iter(|| normative::compare(&path, &params, &reference).unwrap());
+        b.iter(|| normative::compare(&path, &params, reference).unwrap());
     });
     group.bench_function("fit_default_200_walks", |b| {
         let options = gaitlab::fit::FitOptions::default();
-        b.iter(|| gaitlab::fit::fit(&path, &params, &reference, options).unwrap());
+        b.iter(|| gaitlab::fit::fit(&path, &params, reference, options).unwrap());
     });
     group.finish();
 }

@@ -369,11 +369,11 @@ mod tests {
         keys[4] = u("legs.heel_rise", 0.23);
         let rejected = with_keys(&p, &ranges, &keys);
         assert!(!cross_check(&rejected).is_empty());
-        assert_eq!(cost_of(path, &rejected, &reference).0, f64::INFINITY);
+        assert_eq!(cost_of(path, &rejected, reference).0, f64::INFINITY);
         // 0.06 after: accepted, and a walk like any other.
         keys[4] = u("legs.heel_rise", 0.245);
         p = with_keys(&p, &ranges, &keys);
         assert!(cross_check(&p).is_empty());
-        assert!(cost_of(path, &p, &reference).0.is_finite());
+        assert!(cost_of(path, &p, reference).0.is_finite());
     }
 }

@@ -79,10 +79,12 @@ pub struct References {
 }
 
 impl References {
-    /// The built-in references, parsed (a test checks that they do).
+    /// The built-in references, parsed once for the process (a test checks that they parse):
+    /// a report reads them for its summary and three plots, the lab whenever the pace changes.
     #[must_use]
-    pub fn built_in() -> References {
-        References::parse(BUILT_IN, "built-in reference").expect("the built-in reference parses")
+    pub fn built_in() -> &'static References {
+        static BUILT: std::sync::OnceLock<References> = std::sync::OnceLock::new();
+        BUILT.get_or_init(|| References::parse(BUILT_IN, "built-in reference").expect("the built-in reference parses"))
     }
 
     /// Parses the built-in file's format: `#` comments, a header, then 101 rows (0 to 100 %

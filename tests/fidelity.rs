@@ -26,7 +26,7 @@ fn compare(config: &str, sets: &[&str]) -> Comparison {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(config);
     let sets: Vec<String> = sets.iter().map(|s| (*s).to_string()).collect();
     let params = gaitlab::config::load(&path, &sets).unwrap();
-    normative::compare(&path, &params, &References::built_in()).unwrap()
+    normative::compare(&path, &params, References::built_in()).unwrap()
 }
 
 /// (rms_deg at most, r at least, % of the cycle outside +-2 SD at most) for hip, knee, ankle.

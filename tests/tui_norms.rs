@@ -130,6 +130,14 @@ fn the_band_names_the_walks_speed_where_the_panel_has_room() {
     assert!(wide.contains("band: right leg, adults at 1.30 m/s"), "{wide}");
     let narrow = text(&render(&app, 80, 24));
     assert!(narrow.contains("adults 1.30 m/s"), "{narrow}");
+    // `+` asks 1.4 m/s, reached over two steps: the band follows the pace the walk reaches
+    // (the norms are read again when it changes, not every frame).
+    key(&mut app, '+');
+    for _ in 0..150 {
+        app.tick(1.0 / 60.0);
+    }
+    let wide = text(&render(&app, 160, 48));
+    assert!(wide.contains("band: right leg, adults at 1.40 m/s"), "{wide}");
 }
 
 #[test]

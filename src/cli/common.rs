@@ -71,6 +71,6 @@ pub(super) fn references(file: Option<&std::path::Path>) -> Result<(crate::norma
             let text = crate::config::read_text(file, "reference")?;
             (References::parse(&text, &file.display().to_string())?, file.display().to_string())
         }
-        None => (References::built_in(), normative::BUILT_IN_SOURCE.to_string()),
+        None => (References::built_in().clone(), normative::BUILT_IN_SOURCE.to_string()),
     })
 }

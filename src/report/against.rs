@@ -11,7 +11,7 @@ use std::path::Path;
 
 /// The report's walk (`cycles` of the config named `name`) against the built-in reference.
 pub(super) fn compare(name: &str, cycles: u32, run: &Run, summary: &Summary) -> crate::Result<Comparison> {
-    normative::compare_recorded(Path::new(name), cycles, run, summary, &References::built_in())
+    normative::compare_recorded(Path::new(name), cycles, run, summary, References::built_in())
 }
 
 /// `summary.json`: the interface's keys as they always were, then the comparison's headline

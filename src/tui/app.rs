@@ -14,7 +14,7 @@ use crate::model::optimise::{Candidate, StepRecord};
 use crate::model::params::{SearchMethod, WalkParams};
 use crate::model::walk::frame::Frame;
 use crate::model::walk::{ModelError, Walker};
-use crate::normative::{self, Reference, References};
+use crate::normative::{Reference, References};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::cell::RefCell;
 use std::collections::VecDeque;
@@ -103,9 +103,9 @@ pub struct App {
     pub(crate) grid: bool,
     /// The measured adults' mean ± 1 SD behind the joint traces.
     pub norms: bool,
-    /// The built-in normative references by speed, parsed once for every frame that draws
-    /// their band (`None` only if the file bundled in the binary were broken: no band then).
-    pub(crate) references: Option<References>,
+    /// The built-in norms read at the walk's speed, and that speed (m/s): read again only when
+    /// the pace changes (`refresh_norms`), not for every frame that draws the band.
+    pub(super) norms_at_speed: (f64, Reference),
     /// Panel beside the walk on narrow screens.
     pub panel: Panel,
     /// The selected parameter (index into [`PARAMS`]).
@@ -167,7 +167,7 @@ impl App {
             curve: 0,
             grid: false,
             norms: false,
-            references: References::parse(normative::BUILT_IN, "built-in reference").ok(),
+            norms_at_speed: (f64::NAN, References::built_in().blocks[0].clone()),
             panel: Panel::Editor,
             selected: PARAMS.iter().position(|p| p.key == "walk.speed_mps").unwrap_or(0),
             overlay: None,
@@ -190,6 +190,7 @@ impl App {
             hits: RefCell::default(),
         };
         app.record_trace();
+        app.refresh_norms();
         Ok(app)
     }
 
@@ -204,21 +205,6 @@ impl App {
     #[must_use]
     pub fn speed(&self) -> f64 {
         SPEEDS[self.speed_index]
-    }
-
-    /// The norms at the speed the walk walks now (its pace, as a schedule or an edit left
-    /// it), for the joint panel's band; `None` with the band off.
-    #[must_use]
-    pub(crate) fn norms_band(&self) -> Option<Reference> {
-        self.references.as_ref().filter(|_| self.norms).map(|refs| refs.at(self.walk_speed_mps()))
-    }
-
-    /// The speed the walk walks now (m/s): its stride over its cycle, as a schedule or an
-    /// edit left them.
-    #[must_use]
-    pub(crate) fn walk_speed_mps(&self) -> f64 {
-        let r = self.walker.resolved();
-        r.stride_m / r.cycle_s
     }
 
     /// The file name shown in the status bar.
@@ -276,6 +262,7 @@ impl App {
         self.frame = self.walker.frame(self.frame_count);
         self.record_trace();
         self.refresh_landscape();
+        self.refresh_norms();
     }
 
     fn record_trace(&mut self) {
@@ -335,6 +322,7 @@ impl App {
             }
             Msg::ExportStarted(Err(e)) => self.message = Some(format!("report not written: {e}")),
         }
+        self.refresh_norms();
         std::mem::take(&mut self.effects)
     }
 

@@ -3,6 +3,7 @@
 
 use super::app::{App, CurveView, Panel, View};
 use super::keys::Action;
+use crate::normative::{Reference, References};
 
 impl App {
     /// What to show: the view, the curve chart, the grid, the norms band, the panel.
@@ -42,5 +43,30 @@ impl App {
             self.panel = Panel::Joints;
         }
         self.message = Some(if self.norms { "adult norms band on" } else { "adult norms band off" }.into());
+    }
+}
+
+impl App {
+    /// The norms at the speed the walk walks now (its pace, as a schedule or an edit left
+    /// it), for the joint panel's band; `None` with the band off.
+    #[must_use]
+    pub(crate) fn norms_band(&self) -> Option<&Reference> {
+        self.norms.then_some(&self.norms_at_speed.1)
+    }
+
+    /// Reads the norms again if the walk's speed changed (a pace step, an edit, a restart).
+    pub(super) fn refresh_norms(&mut self) {
+        let speed = self.walk_speed_mps();
+        if self.norms_at_speed.0 != speed {
+            self.norms_at_speed = (speed, References::built_in().at(speed));
+        }
+    }
+
+    /// The speed the walk walks now (m/s): its stride over its cycle, as a schedule or an
+    /// edit left them.
+    #[must_use]
+    pub(crate) fn walk_speed_mps(&self) -> f64 {
+        let r = self.walker.resolved();
+        r.stride_m / r.cycle_s
     }
 }

@@ -319,8 +319,7 @@ fn band_note(norms_mps: f64, walk_mps: f64, room: usize) -> Option<String> {
 /// Hip, knee and ankle angles of both legs over the last cycles; with the norms on, the
 /// measured adults' mean ± 1 SD behind them, following the right leg's cycle.
 pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
-    let norms = app.norms_band();
-    let reference = norms.as_ref();
+    let reference = app.norms_band();
     let title = Line::raw(" Joint angles (deg) over time (s) ");
     let legend = joints_legend(app, reference.is_some(), area.width.saturating_sub(2));
     let inner = super::panel(f, area, title, Some(legend));
