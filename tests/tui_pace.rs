@@ -217,4 +217,12 @@ fn plus_and_minus_step_by_a_tenth_from_any_speed() {
     key(&mut app, '-');
     key(&mut app, '-');
     assert_eq!(app.params.walk.speed_mps, 1.65);
+    assert!(app.message.as_deref().unwrap_or_default().contains("walk.speed_mps = 1.65,"), "{:?}", app.message);
+    // A whole tenth is said with its tenth: "1.0", not "1".
+    let mut app = load_app(None, &[]).unwrap();
+    walk(&mut app, 1.0);
+    for _ in 0..3 {
+        key(&mut app, '-');
+    }
+    assert!(app.message.as_deref().unwrap_or_default().contains("walk.speed_mps = 1.0,"), "{:?}", app.message);
 }

@@ -62,16 +62,21 @@ impl App {
                 Some(format!("walk.speed_mps is at its {} ({speed} m/s)", if sign > 0.0 { "most" } else { "least" }));
             return;
         }
+        // 1.0, 1.4, 1.85: the digits the speed has, at least one after the point.
+        let mut shown = format!("{to:.2}");
+        if shown.ends_with('0') {
+            shown.pop();
+        }
         let mut params = self.params.clone();
         params.walk.speed_mps = to;
         let before = std::mem::replace(&mut self.params, params.clone());
-        self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {to}") });
+        self.undo.push(Edit { before, after: params, what: format!("walk.speed_mps = {shown}") });
         self.redo.clear();
         self.walker.request_speed(to);
         self.message = Some(if self.walker.walk_state() == WalkState::Standing {
-            format!("walk.speed_mps = {to}: the speed w sets off at")
+            format!("walk.speed_mps = {shown}: the speed w sets off at")
         } else {
-            format!("walk.speed_mps = {to}, reached over two steps")
+            format!("walk.speed_mps = {shown}, reached over two steps")
         });
     }
 }
