@@ -266,7 +266,7 @@ fn a_megabyte_key_gives_a_short_line_quickly() {
     for (text, place, what) in [
         (format!("[walk]\n{long} = 1\n"), "2:1", "unknown key (keys of [walk]: "),
         (format!("[{long}]\n"), "1:2", "unknown group (groups: body, walk,"),
-        (format!("[curves.{long}]\npoints = []\n"), "1:9", "unknown curve (14 curves; `gaitlab init` lists them all)"),
+        (format!("[curves.{long}]\npoints = []\n"), "1:9", "unknown curve (15 curves; `gaitlab init` lists them all)"),
     ] {
         let line = error_of(&text, &[]);
         assert!(line.chars().count() <= 300, "{} chars: {line}", line.chars().count());

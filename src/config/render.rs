@@ -39,6 +39,7 @@ pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f
         "pelvis.vertical_range_cm" => r.vertical_range * 100.0,
         "pelvis.lateral_range_cm" => unsway(r.lateral_range * 100.0),
         "pelvis.midstance_drop_cm" => r.midstance_drop * 100.0,
+        "pelvis.midstance_offset_cm" => r.midstance_offset * 100.0,
         "legs.toe_off" => r.toe_off,
         "arms.shoulder_range_deg" => deg(r.shoulder_range),
         "arms.elbow_range_deg" => deg(r.elbow_range),

@@ -8,6 +8,7 @@
 //! - [`ik`]: the analytic two-bone solver;
 //! - [`params`]: typed parameters and how the high-level knobs derive the rest;
 //! - [`schedule`]: the pace schedule (speed changes and the stop) a walk plays;
+//! - [`speed_laws`]: how the walking speed sets the step and the mid-stance pelvis;
 //! - [`walk`]: phases, footfalls, swing planning, pelvis, upper body, frames;
 //! - [`optimise`]: the pelvis-position search at double support;
 //! - [`variants`]: enum variant tables for the name tables strum derives.
@@ -21,6 +22,7 @@ pub mod optimise;
 pub mod params;
 pub mod schedule;
 pub mod search;
+pub mod speed_laws;
 pub mod terrain;
 pub mod variants;
 pub mod walk;

@@ -9,6 +9,7 @@ use crate::model::body::{BodyDims, Sex};
 use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
+use crate::model::speed_laws::{WALK_RATIO_PER_175, midstance_drop_cm, midstance_offset_cm};
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
 
@@ -63,7 +64,7 @@ pub struct PelvisParams {
     pub(crate) vertical_range_cm: Option<f64>,
     pub(crate) lateral_range_cm: Option<f64>,
     pub(crate) midstance_drop_cm: Option<f64>,
-    pub(crate) midstance_offset_cm: f64,
+    pub(crate) midstance_offset_cm: Option<f64>,
     pub(crate) trunk_lean_deg: f64,
     pub(crate) rest_tilt_deg: f64,
 }
@@ -354,7 +355,7 @@ impl Default for WalkParams {
                 vertical_range_cm: None,
                 lateral_range_cm: None,
                 midstance_drop_cm: None,
-                midstance_offset_cm: 15.0,
+                midstance_offset_cm: None,
                 trunk_lean_deg: 3.0,
                 rest_tilt_deg: 10.0,
             },
@@ -469,34 +470,6 @@ pub struct Resolved {
     pub ik: IkSettings,
 }
 
-/// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body,
-/// scaled with height. Sekiya & Nagasaki 1998 found it nearly constant across speeds; the
-/// value is the normative walk's own (data/normative/spatiotemporal_by_speed.csv: 0.0054 to
-/// 0.0056 at all six treadmill speeds), taken as it is for the 1.75 m body, so that cadence
-/// and stride sit on the norms at every speed and the joint curves are compared with a walk
-/// of the norms' step. Sekiya's 0.0064 (men, overground) took 1.3 m/s to 110.5 steps/min and
-/// a 1.41 m stride, 1.2 SD below the norms' cadence: the longer step held the pelvis low at
-/// double support and flexed the loading knee 14 deg past the norm.
-pub(crate) const WALK_RATIO_PER_175: f64 = 0.0055;
-
-/// How far below standing hip height the pelvis passes at mid-stance (cm) at `speed_mps`, when
-/// the config does not say: about as high as the stance leg reaches on to its heel rise.
-/// Against the speed-matched norms (data/normative/joint_angles_by_speed.csv) people keep the
-/// hip 0.858-0.859 m from the ankle (99.9 % of reach) from heel strike to 48 % of the cycle,
-/// and every millimetre the walk's pelvis sits lower bends its knee: at 1.0 m/s a drop of 0,
-/// 0.4 and 0.9 cm gives a knee RMS of 7.5, 8.2 and 10.0 deg. The reach guard's bound (below
-/// which a smaller drop changes nothing) is 0 at 0.8 m/s, 0.1 at 1.0, 1.15 at 1.3 and 1.6 at
-/// 1.6; up to 1.3 m/s the law follows it. Above, it rises 2.5 cm per m/s, not the bound's
-/// 1.5: the first full-speed step of a speed-up needs its double support 1.2 cm lower to
-/// reach, and from a mid-stance that high the scheduled 0.8 -> 1.6 m/s walk's pelvis changed
-/// velocity 1.33x as sharply as a steady walk's (1.13x with this slope; 1.6 m/s knee RMS
-/// 10.2 deg against 9.3 on the bound and 11.6 with the earlier 1.5 + 2 (v - 1.3) cm).
-fn midstance_drop_cm(speed_mps: f64) -> f64 {
-    let fast = speed_mps - 1.3;
-    let drop = if fast < 0.0 { 1.1 + 3.5 * fast } else { 1.1 + 2.5 * fast };
-    drop.max(0.0)
-}
-
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):
     ///
@@ -516,8 +489,10 @@ impl WalkParams {
     ///   0.7 m/s falling 3.44 cm per m/s (×sway);
     ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
     /// - mid-stance drop 1.1 cm at 1.3 m/s, 3.5 cm less per m/s slower (none from 0.99 m/s
-    ///   down) and 2.5 cm more per m/s faster: about as high as the stance leg reaches
-    ///   (`midstance_drop_cm`, above);
+    ///   down) and 2 cm less per m/s faster: about as high as the stance leg reaches
+    ///   (`speed_laws::midstance_drop_cm`);
+    /// - mid-stance offset 15 cm ahead of the heel from 1.0 to 1.3 m/s, 3.3 cm further per m/s
+    ///   faster and 5 cm nearer per m/s slower (`speed_laws::midstance_offset_cm`);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
     #[must_use]
     pub fn resolve(&self) -> Resolved {
@@ -570,7 +545,7 @@ impl WalkParams {
                 / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
-            midstance_offset: p.midstance_offset_cm / 100.0,
+            midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v)) / 100.0,
             trunk_lean: deg(p.trunk_lean_deg),
             rest_tilt: deg(p.rest_tilt_deg),
             turnout: deg(self.legs.turnout_deg),

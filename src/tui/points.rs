@@ -84,7 +84,7 @@ impl App {
             CurveView::Elbow => {
                 (CurveName::Elbow, 0.5 * r.elbow_range * deg, (r.elbow_min_flex + 0.5 * r.elbow_range) * deg)
             }
-            CurveView::PelvisVertical => (CurveName::PelvisVertical, 1.0, 0.0),
+            CurveView::PelvisVertical => (CurveName::PelvisVerticalDsMs, 1.0, 0.0),
             CurveView::PelvisForward => (CurveName::PelvisForwardDsMs, 1.0, 0.0),
             CurveView::SwingForward => (CurveName::SwingForward, 1.0, 0.0),
             CurveView::SwingLateral => (CurveName::SwingLateral, 1.0, 0.0),

@@ -103,7 +103,7 @@ impl CurveView {
             CurveView::PelvisRotation => "pelvic rotation (deg)",
             CurveView::PelvisObliquity => "pelvic obliquity (deg)",
             CurveView::PelvisTilt => "pelvic tilt (deg)",
-            CurveView::PelvisVertical => "pelvis vertical shape (0-1)",
+            CurveView::PelvisVertical => "pelvis vertical ds>ms, ms>ds (0-1)",
             CurveView::PelvisLateral => "pelvis lateral (cm)",
             CurveView::PelvisForward => "pelvis forward ds>ms, ms>ds (0-1)",
             CurveView::SwingForward => "swing foot forward (0-1)",

@@ -110,7 +110,8 @@ pub(crate) fn trajectory_curves(design: &CurveSet) -> TrajectoryCurves {
     TrajectoryCurves {
         forward_ds_ms: design.get(CurveName::PelvisForwardDsMs).clone(),
         forward_ms_ds: design.get(CurveName::PelvisForwardMsDs).clone(),
-        vertical: design.get(CurveName::PelvisVertical).clone(),
+        vertical_ms_ds: design.get(CurveName::PelvisVertical).clone(),
+        vertical_ds_ms: design.get(CurveName::PelvisVerticalDsMs).clone(),
     }
 }
 

@@ -33,7 +33,8 @@ impl Walker {
         let traj = trajectory_curves(&design);
         if traj.forward_ds_ms != self.gait.traj.forward_ds_ms
             || traj.forward_ms_ds != self.gait.traj.forward_ms_ds
-            || traj.vertical != self.gait.traj.vertical
+            || traj.vertical_ms_ds != self.gait.traj.vertical_ms_ds
+            || traj.vertical_ds_ms != self.gait.traj.vertical_ds_ms
         {
             self.pending_traj = Some(traj);
         }

@@ -220,7 +220,7 @@ impl Walker {
         let mut worst: Option<(f64, KeyKind)> = None;
         for &(phase, deficit) in deficits {
             let (a, b, u) = self.plan.bracket(phase);
-            let v = self.gait.traj.vertical.eval(u);
+            let v = self.gait.traj.height_progress(a.kind, b.y - a.y, u);
             let mut choice: Option<(KeyKind, f64)> = None;
             for (key, weight) in [(a, 1.0 - v), (b, v)] {
                 let movable = key.phase == ds_phase || key.phase == ms_phase;

@@ -81,7 +81,7 @@ pub fn curve_data(app: &App, view: CurveView) -> CurveData {
         CurveView::Elbow => live(CurveName::Elbow, deg, "right cycle (0-1)"),
         CurveView::PelvisVertical | CurveView::PelvisForward => {
             let names: &[CurveName] = if view == CurveView::PelvisVertical {
-                &[CurveName::PelvisVertical]
+                &[CurveName::PelvisVerticalDsMs, CurveName::PelvisVertical]
             } else {
                 &[CurveName::PelvisForwardDsMs, CurveName::PelvisForwardMsDs]
             };
