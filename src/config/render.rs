@@ -41,6 +41,7 @@ pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f
         "pelvis.midstance_drop_cm" => r.midstance_drop * 100.0,
         "pelvis.midstance_offset_cm" => r.midstance_offset * 100.0,
         "legs.toe_off" => r.toe_off,
+        "legs.heel_rise" => r.heel_rise,
         "arms.shoulder_range_deg" => deg(r.shoulder_range),
         "arms.elbow_range_deg" => deg(r.elbow_range),
         _ => return None,

@@ -9,7 +9,9 @@ use crate::model::body::{BodyDims, Sex};
 use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
-use crate::model::speed_laws::{WALK_RATIO_PER_175, midstance_drop_cm, midstance_offset_cm};
+use crate::model::speed_laws::{
+    WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm, midstance_offset_cm,
+};
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
 
@@ -74,7 +76,7 @@ pub struct PelvisParams {
 #[allow(missing_docs)]
 pub struct LegParams {
     pub(crate) foot_flat: f64,
-    pub heel_rise: f64,
+    pub heel_rise: Option<f64>,
     pub(crate) toe_off: Option<f64>,
     pub(crate) turnout_deg: f64,
     pub knee_lift_cm: f64,
@@ -361,7 +363,7 @@ impl Default for WalkParams {
             },
             legs: LegParams {
                 foot_flat: 0.06,
-                heel_rise: 0.31,
+                heel_rise: None,
                 toe_off: None,
                 turnout_deg: 7.0,
                 knee_lift_cm: 0.0,
@@ -429,6 +431,9 @@ pub struct Resolved {
     pub heel_rise: f64,
     /// Cycle phase of toe-off; stance lasts `toe_off` of the cycle.
     pub(crate) toe_off: f64,
+    /// Where the pelvis's double-support key (its lowest point) falls, as a share of the
+    /// double support after heel strike.
+    pub(crate) double_support_key: f64,
     /// Peak-to-peak pelvic rotation (rad).
     pub(crate) rotation_range: f64,
     /// Peak-to-peak pelvic obliquity (rad).
@@ -536,8 +541,9 @@ impl WalkParams {
             stride_m,
             step_width_m: self.walk.step_width_m.unwrap_or((0.10 - 0.02 * fast).max(0.05)),
             foot_flat: self.legs.foot_flat,
-            heel_rise: self.legs.heel_rise,
+            heel_rise: self.legs.heel_rise.unwrap_or(heel_rise_phase(v)),
             toe_off: self.legs.toe_off.unwrap_or((0.62 - 0.04 * fast).clamp(0.55, 0.70)),
+            double_support_key: double_support_key_share(v),
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
             tilt_range: deg(p.tilt_range_deg),

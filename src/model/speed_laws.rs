@@ -45,3 +45,31 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
     15.0 + 3.3 * (speed_mps - 1.3).max(0.0) - 5.0 * (1.0 - speed_mps).max(0.0)
 }
+
+/// Where the pelvis passes its lowest point, as a share of the double support after heel
+/// strike, at `speed_mps`: mid double support (the thesis's key) up to 1.3 m/s, 0.25 sooner
+/// per m/s faster, down to 0.4 from 1.7 m/s. The norms' hip is lowest near heel strike and
+/// already rising after it; in a fast walk the landing knee, held down by a pelvis still
+/// falling to mid double support, flexed 10 deg more than theirs in loading response. Knee
+/// RMS against the norms at 1.6 m/s for a share of 0.5 / 0.45 / 0.4 / 0.35: 7.3 / 6.3 / 5.7 /
+/// 5.9 deg (brisk, 1.75 m/s: 7.3 / 6.3 / 5.7 / 5.5, its ankle RMS 4.1 at 0.35); at 1.3 m/s
+/// 0.45 and 0.4 gain nothing (7.2, 7.4), and at 1.0 m/s and slower an earlier lowest point
+/// bends the ankle's shape (r 0.967 -> 0.934 at 0.4). The pelvis then rises less above its
+/// lowest point ([`heel_rise_phase`] gives that back): 0.33 sooner per m/s (0.4 at 1.6 m/s)
+/// left 1.6 m/s's vertical range at 1.3 m/s's, 2.49 cm.
+pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
+    (0.5 - 0.25 * (speed_mps - 1.3)).clamp(0.4, 0.5)
+}
+
+/// The cycle phase at which the stance heel rises at `speed_mps`: 0.31 up to 1.3 m/s, 0.1
+/// sooner per m/s faster. With the lowest point of the pelvis nearer heel strike
+/// ([`double_support_key_share`]) the fast walks' pelvis no longer fell below its heel-strike
+/// height, and its vertical range stopped rising with speed (2.52 / 2.69 / 2.79 cm at 1.3 /
+/// 1.6 / 1.75 m/s; Orendurff et al. 2004's rises 2.33 cm per m/s). A sooner heel rise lets the
+/// stance leg carry the mid-stance pelvis higher: 3.32 cm at 1.6 m/s and 3.81 at 1.75, the
+/// knee's RMS against the norms 6.4 deg at both (5.9 and 5.7 with the heel rising at 0.31,
+/// 7.3 and 7.3 with neither law). At 1.3 m/s a sooner heel rise flexes the knee (0.28: RMS
+/// 7.25 -> 8.26 deg).
+pub(crate) fn heel_rise_phase(speed_mps: f64) -> f64 {
+    0.31 - 0.1 * (speed_mps - 1.3).max(0.0)
+}

@@ -264,7 +264,7 @@ impl Walker {
             (next.vertical_range.max(r.vertical_range), next.midstance_drop.max(r.midstance_drop))
         });
         PelvisKey {
-            phase: strike_phase + 0.5 * (r.toe_off - 0.5),
+            phase: strike_phase + r.double_support_key * (r.toe_off - 0.5),
             x: 0.5 * (ms_before.x + ms_after.x),
             y: ground + r.dims.standing_hip_height() - drop - vertical_range,
             kind: KeyKind::DoubleSupport,
