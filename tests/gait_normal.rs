@@ -467,3 +467,41 @@ fn the_stance_leg_reaches_until_its_heel_rises_whatever_the_mid_stance_drop() {
         assert!(checks.foot_skate_mm < 0.01, "{name} {set}: {checks:?}");
     }
 }
+
+/// A change whose heel-rise phase differs (the speed's own above 1.3 m/s, or a typed
+/// `legs.heel_rise`) ends in the walk of the new phase. A heel strike always finds the other
+/// leg inside its heel rise, so a restore at heel strikes alone kept the old phase for good:
+/// after 1.3 -> 1.6 m/s the heels rose at 0.31 of the cycle instead of the law's 0.28, and a
+/// typed 0.36 was shown but never walked.
+#[test]
+fn a_change_of_heel_rise_phase_reaches_the_walk() {
+    for (text, wanted) in [("[walk]\nspeed_mps = 1.6\n", 0.28), ("[legs]\nheel_rise = 0.36\n", 0.36)] {
+        let changed = config::load_text(text, "live", &[]).unwrap();
+        let mut w = Walker::new(&default_params()).unwrap();
+        let mut rising_at = Vec::new();
+        let mut was_rising = [false; 2];
+        let mut asked = false;
+        for i in 0..720 {
+            // Asked while a leg is inside its heel rise, as a pace change at heel strike is.
+            if !asked && i >= 120 && w.frame(0).legs.iter().any(|l| l.leg_phase == LegPhase::HeelRise) {
+                assert!(w.set_params(&changed).unwrap());
+                asked = true;
+            }
+            w.advance(1.0 / 60.0);
+            let f = w.frame(i);
+            for (k, leg) in f.legs.iter().enumerate() {
+                let rising = leg.leg_phase == LegPhase::HeelRise;
+                if rising && !was_rising[k] && i > 480 {
+                    rising_at.push(leg.phase);
+                }
+                was_rising[k] = rising;
+            }
+        }
+        assert!((w.resolved().heel_rise - wanted).abs() < 1e-9, "{text}: {}", w.resolved().heel_rise);
+        // Entered at the first frame past it: within a frame (1.6 m/s: 0.022 of a cycle).
+        assert!(
+            rising_at.len() >= 4 && rising_at.iter().all(|p| (p - wanted) >= 0.0 && (p - wanted) < 0.025),
+            "{text}: {rising_at:?}"
+        );
+    }
+}

@@ -196,7 +196,7 @@ impl Gait {
                 extra_heel_rise: 0.0,
             },
             LegPhase::HeelRise => {
-                let s = ((q - r.heel_rise) / (leg.toe_off - r.heel_rise)).clamp(0.0, 1.0);
+                let s = ((q - leg.heel_rise) / (leg.toe_off - leg.heel_rise)).clamp(0.0, 1.0);
                 let curve_angle =
                     (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
                 let ankle_at =
@@ -244,7 +244,7 @@ impl Gait {
         loop {
             let end = match leg.phase {
                 LegPhase::LoadingResponse => self.r.foot_flat,
-                LegPhase::Midstance => self.r.heel_rise,
+                LegPhase::Midstance => leg.heel_rise,
                 LegPhase::HeelRise | LegPhase::Swing => return,
             };
             let boundary = leg.cycle_start + end;

@@ -80,18 +80,14 @@ impl Walker {
     /// jump behind a leg inside the phase it ends, and a swinging leg keeps the toe-off its
     /// swing is timed from.
     fn bounded_phases(&self, wanted: PhaseBounds, phase: f64) -> PhaseBounds {
-        let PhaseBounds { mut foot_flat, mut heel_rise, mut toe_off } = wanted;
+        // The heel rise is each leg's own, frozen when its step was planned.
+        let PhaseBounds { mut foot_flat, heel_rise, mut toe_off } = wanted;
         for leg in &self.legs {
             let q = phase - leg.cycle_start;
             match leg.phase {
                 LegPhase::LoadingResponse => foot_flat = foot_flat.max(q),
-                // A leg standing for good has no heel rise to keep behind it.
-                LegPhase::Midstance if self.holds_midstance(leg) => {}
-                LegPhase::Midstance => heel_rise = heel_rise.max(q),
-                LegPhase::HeelRise => {
-                    toe_off = toe_off.max(q);
-                    heel_rise = self.gait.r.heel_rise;
-                }
+                LegPhase::Midstance => {}
+                LegPhase::HeelRise => toe_off = toe_off.max(q),
                 LegPhase::Swing => toe_off = self.gait.r.toe_off,
             }
         }

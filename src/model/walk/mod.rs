@@ -275,7 +275,7 @@ impl Walker {
         let end = match leg.phase {
             LegPhase::LoadingResponse => self.gait.r.foot_flat,
             LegPhase::Midstance if self.holds_midstance(leg) => return f64::INFINITY,
-            LegPhase::Midstance => self.gait.r.heel_rise,
+            LegPhase::Midstance => leg.heel_rise,
             LegPhase::HeelRise => leg.toe_off,
             LegPhase::Swing => 1.0,
         };

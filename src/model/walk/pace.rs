@@ -55,6 +55,7 @@ impl Walker {
         // the heel strike between may have moved the walk's).
         let walk_toe_off = self.gait.r.toe_off;
         self.gait.r.toe_off = self.legs[i].toe_off;
+        self.legs[i].heel_rise = self.gait.r.heel_rise;
         self.plan_swing_step(side, at, toe_off_pose);
         self.gait.r.toe_off = walk_toe_off;
     }

@@ -116,7 +116,7 @@ impl Walker {
             samples.extend([-0.03, -0.02, -0.01, -0.005].map(|d| strike_phase + d));
         }
         samples.extend((0..=6).map(|i| strike_phase + r.foot_flat * i as f64 / 6.0));
-        let window_end = strike_phase + r.heel_rise;
+        let window_end = strike_phase + self.legs[side.index()].heel_rise;
         samples.extend(
             (1..=8).map(|i| strike_phase + r.foot_flat + (window_end - strike_phase - r.foot_flat) * i as f64 / 8.0),
         );
@@ -252,7 +252,7 @@ impl Walker {
         } else {
             ff.heel + foot_rotation(ff.yaw, ff.ground_angle) * (r.dims.ball_local() - r.dims.heel_local())
         };
-        let (from, to) = (leg.cycle_start + r.heel_rise, leg.cycle_start + r.toe_off);
+        let (from, to) = (leg.cycle_start + leg.heel_rise, leg.cycle_start + r.toe_off);
         let phases = (0..=8).map(|i| from + (to - from) * f64::from(i) / 8.0).collect();
         // The ankle at each heel-rise angle depends on the foot alone, not on the hip the
         // guard tries: worked out once here, not for every phase of every pass (those
