@@ -68,12 +68,27 @@ pub(crate) fn quoted(s: &str) -> String {
     format!("\"{}\"", clip_pieces(pieces, ECHO_CHARS))
 }
 
-/// A number as a message shows it: as Rust prints it when that is short, in exponent form
-/// otherwise (`1e308`, not 309 digits).
+/// A number as a message shows it: as Rust prints it when that is short, else to six
+/// significant digits, in exponent form outside 1e-4..1e15 (`1e308`, not 309 digits). A value
+/// the lab computed (a dragged control point) read `-1.0119047619048305e-2` and pushed the
+/// reason off an 80-column line; now `-0.010119`.
 #[must_use]
 pub fn number(x: f64) -> String {
     let plain = format!("{x}");
-    if plain.len() <= 16 { plain } else { format!("{x:e}") }
+    if plain.len() <= 16 {
+        return plain;
+    }
+    let trim =
+        |s: &str| if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s.into() };
+    let magnitude = x.abs();
+    if (1e-4..1e15).contains(&magnitude) {
+        let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
+        trim(&format!("{x:.decimals$}"))
+    } else {
+        let text = format!("{x:.5e}");
+        let (mantissa, exponent) = text.split_once('e').expect("exponent form");
+        format!("{}e{exponent}", trim(mantissa))
+    }
 }
 
 /// "a" or "an" before `word`.
@@ -134,6 +149,12 @@ mod tests {
         assert_eq!(number(1e308), "1e308");
         assert_eq!(number(1e-308), "1e-308");
         assert_eq!(number(-0.0), "-0");
+        // Values the lab computes, at six significant digits.
+        assert_eq!(number(-1.0119047619048305e-2), "-0.010119");
+        assert_eq!(number(1.0041666666666669), "1.00417");
+        assert_eq!(number(3.3333333333333326e-2), "0.0333333");
+        assert_eq!(number(123456.78901234567), "123457");
+        assert_eq!(number(1.2345678901234567e-7), "1.23457e-7");
     }
 
     #[test]

@@ -50,7 +50,10 @@ fn landscape<DB: DrawingBackend>(
         None => (x_from, x_to),
     };
     let x_axis = (x_from - lo) * 100.0..((x_to - lo) * 100.0).max((x_from - lo) * 100.0 + 1e-6);
-    let y = y_range(&[feasible.as_slice(), chosen_point.as_slice()]);
+    // Headroom above the costs for the legend, as in the cost-per-step chart: beside them it
+    // covered three of brisk's samples.
+    let data = y_range(&[feasible.as_slice(), chosen_point.as_slice()]);
+    let y = data.start..data.end + 0.35 * (data.end - data.start);
     let zoomed = if (x_from, x_to) == (lo, hi) { String::new() } else { " (feasible band)".to_string() };
     let mut chart = ChartBuilder::on(area)
         .caption(format!("cost landscape, step {}{zoomed}", plan.step), (FONT, 30))
@@ -59,10 +62,12 @@ fn landscape<DB: DrawingBackend>(
         .y_label_area_size(90)
         .build_cartesian_2d(x_axis, y.clone())
         .map_err(err)?;
+    let y_label = cost_label(y.end - y.start);
     chart
         .configure_mesh()
         .x_desc("pelvis x at double support, from range start (cm)")
         .y_desc("cost (rad^2/s^3)")
+        .y_label_formatter(&y_label)
         .label_style((FONT, 20))
         .axis_desc_style((FONT, 22))
         .draw()
@@ -70,14 +75,14 @@ fn landscape<DB: DrawingBackend>(
     chart
         .draw_series(feasible.iter().map(|p| Circle::new(*p, 4, RIGHT.filled())))
         .map_err(err)?
-        .label("feasible candidate")
+        .label("landscape, feasible")
         .legend(|(x, y)| Circle::new((x + 10, y), 4, RIGHT.filled()));
     let unreachable: Vec<(f64, f64)> =
         land.iter().filter(|c| c.cost.is_none()).map(|c| ((c.x - lo) * 100.0, y.start)).collect();
     chart
         .draw_series(unreachable.iter().map(|p| Cross::new(*p, 5, BLACK.stroke_width(2))))
         .map_err(err)?
-        .label("unreachable")
+        .label("landscape, unreachable")
         .legend(|(x, y)| Cross::new((x + 10, y), 5, BLACK.stroke_width(2)));
     if let Some(&point) = chosen_point.first() {
         let lowered_cm = (problem.ds.y - chosen.y) * 100.0;
@@ -89,7 +94,7 @@ fn landscape<DB: DrawingBackend>(
             .label(label)
             .legend(|(x, y)| TriangleMarker::new((x + 10, y), 8, LEFT.filled()));
     }
-    draw_legend(&mut chart, 20, None)?;
+    draw_legend(&mut chart, 20, Some(SeriesLabelPosition::UpperRight))?;
     Ok(())
 }
 
@@ -164,14 +169,16 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         .margin(12)
         .x_label_area_size(50)
         .y_label_area_size(80)
-        .build_cartesian_2d(0f64..smax + 1.0, y)
+        .build_cartesian_2d(0f64..smax + 1.0, y.clone())
         .map_err(err)?;
+    let y_label = cost_label(y.end - y.start);
     chart
         .configure_mesh()
         .x_desc("step")
         // Steps are whole numbers: "2.0, 4.0" read as if there were half steps.
         .x_label_formatter(&|x| format!("{x:.0}"))
         .y_desc("cost (rad^2/s^3)")
+        .y_label_formatter(&y_label)
         .label_style((FONT, 18))
         .axis_desc_style((FONT, 20))
         .draw()
@@ -202,6 +209,19 @@ fn kept_fixed_rule(plans: &[StepPlan]) -> (usize, usize) {
     costed.fold((0, 0), |(kept, n), o| (kept + usize::from((o.chosen.x - o.fixed_rule.x).abs() < 1e-9), n + 1))
 }
 
+/// Cost tick labels with as many decimals as the axis's `span` needs and no more: a brisk
+/// walk's 17 900-18 000 rad²/s³ printed as "17960.0" ran into the axis title.
+fn cost_label(span: f64) -> impl Fn(&f64) -> String {
+    let decimals = if span >= 10.0 {
+        0
+    } else if span >= 1.0 {
+        1
+    } else {
+        2
+    };
+    move |v: &f64| format!("{v:.decimals$}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -224,5 +244,12 @@ mod tests {
         let off = crate::analysis::run(&params, 6.0, 60.0).unwrap();
         let (kept_off, costed_off) = kept_fixed_rule(&off.step_plans);
         assert!(costed_off >= 8 && kept_off == costed_off, "{kept_off} of {costed_off}");
+    }
+
+    #[test]
+    fn cost_labels_carry_only_the_decimals_their_axis_needs() {
+        assert_eq!(cost_label(400.0)(&17960.0), "17960");
+        assert_eq!(cost_label(4.0)(&1986.25), "1986.2");
+        assert_eq!(cost_label(0.5)(&1986.257), "1986.26");
     }
 }
