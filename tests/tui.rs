@@ -749,3 +749,36 @@ fn the_wide_screen_marks_the_focused_panel_border() {
         .count();
     assert_eq!(marked, 0);
 }
+
+/// The pelvis charts draw two curves each, too small a chart for ratatui's legend at the
+/// lab's sizes: the title names the segments in their lines' colours instead.
+#[test]
+fn the_two_curve_pelvis_charts_name_their_curves_in_their_colours() {
+    let mut app = walked(Some(&config("default")), 30);
+    let vertical = gaitlab::tui::app::CurveView::ALL
+        .iter()
+        .position(|v| *v == gaitlab::tui::app::CurveView::PelvisVertical)
+        .unwrap();
+    while app.curve != vertical {
+        key(&mut app, KeyCode::Char('c'));
+    }
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
+    let buffer = terminal.backend().buffer().clone();
+    let colour_of = |word: &str| {
+        (0..48u16).find_map(|y| {
+            let row: String = (0..160u16).map(|x| buffer[(x, y)].symbol().to_string()).collect();
+            let at = row.find(&format!("vertical {}", "ds>ms"))?;
+            let offset = if word == "ds>ms" { 9 } else { 16 };
+            let x = row[..at].chars().count() + offset;
+            Some(buffer[(x as u16, y)].fg)
+        })
+    };
+    let data = gaitlab::tui::ui::curves::curve_data(&app, gaitlab::tui::app::CurveView::PelvisVertical);
+    assert_eq!(
+        data.lines.iter().map(|l| l.0.as_str()).collect::<Vec<_>>(),
+        ["pelvis_vertical_ds_ms", "pelvis_vertical"]
+    );
+    assert_eq!(colour_of("ds>ms"), Some(data.lines[0].1));
+    assert_eq!(colour_of("ms>ds"), Some(data.lines[1].1));
+}

@@ -202,12 +202,7 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
     }
     // The x axis's name in the bottom border: ratatui draws an axis title on the chart's
     // lowest data row, where it hid the curve's minimum (the pelvic rotation at mid-cycle).
-    let inner = super::panel(
-        f,
-        area,
-        Line::raw(format!(" {} ", data.title)),
-        Some(Line::raw(format!(" x: {} ", data.x_label))),
-    );
+    let inner = super::panel(f, area, coloured_title(&data), Some(Line::raw(format!(" x: {} ", data.x_label))));
     let (x_labels, y_labels) = ([label(x[0]), label(x[1])], [label(y[0]), label(y[1])]);
     let graph = graph_area(inner, &x_labels, &y_labels);
     app.hits.borrow_mut().charts.push(ChartHit { view, graph, x, y });
@@ -218,6 +213,26 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
         // The legend only where it covers little of the chart: in small charts it hid the data.
         .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
     f.render_widget(chart, inner);
+}
+
+/// The chart's title, its segment names ("ds>ms", "ms>ds") drawn in their lines' colours:
+/// the pelvis charts draw two curves, and the legend that would name them fits only in a
+/// chart far wider than the lab's (80x24 and 160x48 showed none), so the colours were
+/// unexplained.
+fn coloured_title(data: &CurveData) -> Line<'static> {
+    let mut spans = vec![Span::raw(" ")];
+    let mut rest = data.title;
+    while let Some((at, name, colour)) = [("ds>ms", 0), ("ms>ds", 1)]
+        .iter()
+        .filter_map(|(name, i)| Some((rest.find(name)?, *name, data.lines.get(*i)?.1)))
+        .min_by_key(|(at, _, _)| *at)
+    {
+        spans.push(Span::raw(rest[..at].to_string()));
+        spans.push(Span::styled(name, Style::new().fg(colour)));
+        rest = &rest[at + name.len()..];
+    }
+    spans.push(Span::raw(format!("{rest} ")));
+    Line::from(spans)
 }
 
 /// The cells a `Chart` with these labels (and no axis titles) plots its data in, as
