@@ -93,16 +93,22 @@ pub fn cross_check(p: &WalkParams) -> Vec<(Vec<&'static str>, String)> {
             format!("toe-off at {:.3} of the cycle leaves almost no double support: that is a run, which gaitlab does not model; valid: toe_off from 0.52", r.toe_off),
         ));
     }
+    // A heel rise the user did not set follows speed: say so, or the message blames a key the
+    // config never names.
+    let heel_rise = match p.legs.heel_rise {
+        Some(_) => echo::number(r.heel_rise),
+        None => format!("{}, derived from walk.speed_mps; set legs.heel_rise to choose it", echo::number(r.heel_rise)),
+    };
     if r.heel_rise - r.foot_flat < 0.05 {
         out.push((
-            vec!["legs.heel_rise", "legs.foot_flat"],
-            format!("heel_rise ({}) must come at least 0.05 of a cycle after foot_flat ({})", r.heel_rise, r.foot_flat),
+            vec!["legs.heel_rise", "legs.foot_flat", "walk.speed_mps"],
+            format!("heel_rise ({heel_rise}) must come at least 0.05 of a cycle after foot_flat ({})", r.foot_flat),
         ));
     }
     if r.toe_off - r.heel_rise < 0.05 {
         out.push((
             vec!["legs.toe_off", "legs.heel_rise"],
-            format!("toe_off ({:.3}) must come at least 0.05 of a cycle after heel_rise ({})", r.toe_off, r.heel_rise),
+            format!("toe_off ({:.3}) must come at least 0.05 of a cycle after heel_rise ({heel_rise})", r.toe_off),
         ));
     }
     if 1.0 - r.toe_off < 0.25 {
