@@ -21,7 +21,8 @@ fn json(out: &std::process::Output) -> serde_json::Value {
 /// Against the speed-matched references (2026-11-25, the reference at 1.30 m/s instead of
 /// 1.245): from 6.81 / 12.47 / 10.43 to 2.36 / 5.41 / 2.21 (ankle r 0.954), cost 9.90 -> 3.33;
 /// with the mid-stance drop law of session 12: 6.74 / 11.78 / 11.11 to 2.06 / 5.70 / 2.50 (ankle
-/// r 0.949), cost 9.88 -> 3.42.
+/// r 0.949), cost 9.88 -> 3.42; with session 13's speed laws and quicker pelvis rise: 6.58 /
+/// 11.42 / 11.02 to 1.98 / 5.31 / 2.18 (ankle r 0.964), cost 9.67 -> 3.16.
 const BAD: [&str; 8] = [
     "--set",
     "pelvis.vertical_range_cm=0.6",
