@@ -781,4 +781,20 @@ fn the_two_curve_pelvis_charts_name_their_curves_in_their_colours() {
     );
     assert_eq!(colour_of("ds>ms"), Some(data.lines[0].1));
     assert_eq!(colour_of("ms>ds"), Some(data.lines[1].1));
+    // Editing the rise keeps it in its colour: a grey "design" copy once covered it.
+    let braille_in = |app: &App, colour| {
+        let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+        terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
+        let buffer = terminal.backend().buffer().clone();
+        buffer
+            .content()
+            .iter()
+            .filter(|c| c.fg == colour && ('\u{2801}'..='\u{28ff}').contains(&c.symbol().chars().next().unwrap()))
+            .count()
+    };
+    let before = braille_in(&app, data.lines[0].1);
+    key(&mut app, KeyCode::Char('>'));
+    assert!(app.point.is_some(), "a control point is selected");
+    let after = braille_in(&app, data.lines[0].1);
+    assert!(after * 10 > before * 9, "the rise's own colour in {after} cells while editing, {before} before");
 }

@@ -140,7 +140,9 @@ fn show_edited(app: &App, view: CurveView, data: &mut CurveData) -> Option<Vec<(
     let map = app.edit_map(view);
     data.control = app.design_points(map.name).iter().map(|&(x, y)| (x, map.shown(y))).collect();
     let design = sample(app.walker.design_curves().get(map.name), map.a, map.b);
-    match data.lines.iter_mut().find(|l| l.0 == "design") {
+    // The two-curve pelvis charts draw the design curves themselves, named by key: the
+    // edited one is updated in its own colour, not covered by a grey copy.
+    match data.lines.iter_mut().find(|l| l.0 == "design" || l.0 == map.name.key()) {
         Some(line) => line.2 = design,
         None => data.lines.push(("design".into(), Color::DarkGray, design)),
     }
