@@ -18,14 +18,27 @@ fn config(name: &str) -> PathBuf {
     Path::new("configs").join(format!("{name}.toml"))
 }
 
-fn screen(app: &App, width: u16, height: u16) -> String {
+/// The lab drawn into a `width` x `height` test terminal.
+fn rendered(app: &App, width: u16, height: u16) -> ratatui::buffer::Buffer {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer();
+    terminal.backend().buffer().clone()
+}
+
+fn screen(app: &App, width: u16, height: u16) -> String {
+    let buffer = rendered(app, width, height);
     (0..height)
         .map(|y| (0..width).map(|x| buffer[(x, y)].symbol().to_string()).collect::<String>().trim_end().to_string())
         .collect::<Vec<_>>()
         .join("\n")
+}
+
+/// `c` until the curve chart shows `view`.
+fn show_curve(app: &mut App, view: gaitlab::tui::app::CurveView) {
+    let index = gaitlab::tui::app::CurveView::ALL.iter().position(|v| *v == view).unwrap();
+    while app.curve != index {
+        key(app, KeyCode::Char('c'));
+    }
 }
 
 /// One key through the lab as its event loop does it: the state's update, then the effects
@@ -137,13 +150,7 @@ fn stairs_walk_mid_swing_with_the_adapted_heel_curve() {
     {
         app.tick(1.0 / 60.0);
     }
-    let heel = gaitlab::tui::app::CurveView::ALL
-        .iter()
-        .position(|v| *v == gaitlab::tui::app::CurveView::SwingHeelHeight)
-        .unwrap();
-    while app.curve != heel {
-        key(&mut app, KeyCode::Char('c'));
-    }
+    show_curve(&mut app, gaitlab::tui::app::CurveView::SwingHeelHeight);
     key(&mut app, KeyCode::Tab);
     assert_eq!(app.panel, Panel::Curves);
     // The swinging foot climbs from its last footfall to its next, two treads (2 × 15 cm)
@@ -710,9 +717,7 @@ fn the_optimisers_rerun_row_says_what_it_is() {
 fn the_wide_screen_marks_the_focused_panel_border() {
     let mut app = walked(None, 30);
     let focused_corners = |app: &App| {
-        let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
-        terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
-        let buffer = terminal.backend().buffer().clone();
+        let buffer = rendered(app, 160, 48);
         let style = ui::FOCUS_BORDER;
         let mut corners: Vec<(u16, u16)> = Vec::new();
         for y in 0..48 {
@@ -738,9 +743,7 @@ fn the_wide_screen_marks_the_focused_panel_border() {
     assert_eq!(curves.len(), 1, "{curves:?}");
     assert!((60..110).contains(&curves[0].0) && curves[0].1 == 0, "the curve chart, middle top: {curves:?}");
     // The narrow screen has tabs instead, and no marked border.
-    let mut terminal = Terminal::new(TestBackend::new(80, 24)).unwrap();
-    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer();
+    let buffer = rendered(&app, 80, 24);
     let marked = (0..24)
         .flat_map(|y| (0..80).map(move |x| (x, y)))
         .filter(|&(x, y)| {
@@ -755,16 +758,8 @@ fn the_wide_screen_marks_the_focused_panel_border() {
 #[test]
 fn the_two_curve_pelvis_charts_name_their_curves_in_their_colours() {
     let mut app = walked(Some(&config("default")), 30);
-    let vertical = gaitlab::tui::app::CurveView::ALL
-        .iter()
-        .position(|v| *v == gaitlab::tui::app::CurveView::PelvisVertical)
-        .unwrap();
-    while app.curve != vertical {
-        key(&mut app, KeyCode::Char('c'));
-    }
-    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
-    terminal.draw(|f| ui::draw(f, &app, Marker::Braille)).unwrap();
-    let buffer = terminal.backend().buffer().clone();
+    show_curve(&mut app, gaitlab::tui::app::CurveView::PelvisVertical);
+    let buffer = rendered(&app, 160, 48);
     let colour_of = |word: &str| {
         (0..48u16).find_map(|y| {
             let row: String = (0..160u16).map(|x| buffer[(x, y)].symbol().to_string()).collect();
@@ -783,10 +778,7 @@ fn the_two_curve_pelvis_charts_name_their_curves_in_their_colours() {
     assert_eq!(colour_of("ms>ds"), Some(data.lines[1].1));
     // Editing the rise keeps it in its colour: a grey "design" copy once covered it.
     let braille_in = |app: &App, colour| {
-        let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
-        terminal.draw(|f| ui::draw(f, app, Marker::Braille)).unwrap();
-        let buffer = terminal.backend().buffer().clone();
-        buffer
+        rendered(app, 160, 48)
             .content()
             .iter()
             .filter(|c| c.fg == colour && ('\u{2801}'..='\u{28ff}').contains(&c.symbol().chars().next().unwrap()))
