@@ -394,7 +394,9 @@ impl PelvisPlan {
 }
 
 /// The largest rise out of double support (m) that takes the quick-start rise curve at full
-/// weight: the level walks' rises are 1.2-2.7 cm from 0.8 to 1.75 m/s.
+/// weight. The level walks up to 1.3 m/s rise at most 2.5 cm and take it whole; the 1.6 and
+/// 1.75 m/s walks, once their heel rose sooner, 3.3 and 3.8 cm (walked vertical range), and
+/// take it at weights of about 0.66 and 0.50.
 pub const QUICK_RISE_M: f64 = 0.027;
 
 /// The design curves the trajectory is built from.

@@ -50,10 +50,8 @@ fn landscape<DB: DrawingBackend>(
         None => (x_from, x_to),
     };
     let x_axis = (x_from - lo) * 100.0..((x_to - lo) * 100.0).max((x_from - lo) * 100.0 + 1e-6);
-    // Headroom above the costs for the legend, as in the cost-per-step chart: beside them it
-    // covered three of brisk's samples.
-    let data = y_range(&[feasible.as_slice(), chosen_point.as_slice()]);
-    let y = data.start..data.end + 0.35 * (data.end - data.start);
+    // Beside the costs the legend covered three of brisk's samples.
+    let y = legend_headroom(y_range(&[feasible.as_slice(), chosen_point.as_slice()]));
     let zoomed = if (x_from, x_to) == (lo, hi) { String::new() } else { " (feasible band)".to_string() };
     let mut chart = ChartBuilder::on(area)
         .caption(format!("cost landscape, step {}{zoomed}", plan.step), (FONT, 30))
@@ -153,10 +151,9 @@ fn cost_per_step<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plans: &[Ste
         plans.iter().filter_map(|p| p.optimisation.chosen.cost.map(|c| (p.step as f64, c))).collect();
     let fixed: Vec<(f64, f64)> =
         plans.iter().filter_map(|p| p.optimisation.fixed_rule.cost.map(|c| (p.step as f64, c))).collect();
-    // Headroom above the costs for the legend: placed by plotters beside them, it covered the
-    // last steps of a flat series (stroll, default).
-    let data = y_range(&[chosen.as_slice(), fixed.as_slice()]);
-    let y = data.start..data.end + 0.35 * (data.end - data.start);
+    // Placed by plotters beside the costs, the legend covered the last steps of a flat series
+    // (stroll, default).
+    let y = legend_headroom(y_range(&[chosen.as_slice(), fixed.as_slice()]));
     // Where the optimiser keeps the fixed rule the two lines are one; say so, or the fixed
     // rule's line looks missing.
     let caption = match kept_fixed_rule(plans) {
@@ -207,6 +204,12 @@ fn kept_fixed_rule(plans: &[StepPlan]) -> (usize, usize) {
     let costed =
         plans.iter().map(|p| &p.optimisation).filter(|o| o.chosen.cost.is_some() && o.fixed_rule.cost.is_some());
     costed.fold((0, 0), |(kept, n), o| (kept + usize::from((o.chosen.x - o.fixed_rule.x).abs() < 1e-9), n + 1))
+}
+
+/// `data`'s y range with a third of its height again above it, where a chart's legend is
+/// placed (upper right) clear of the costs.
+fn legend_headroom(data: std::ops::Range<f64>) -> std::ops::Range<f64> {
+    data.start..data.end + 0.35 * (data.end - data.start)
 }
 
 /// Cost tick labels with as many decimals as the axis's `span` needs and no more: a brisk
