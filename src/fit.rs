@@ -56,7 +56,7 @@ pub const FIT_KEYS: [FitKey; 8] = [
     },
     FitKey {
         key: "pelvis.vertical_range_cm",
-        range: |_| (0.5, 6.0),
+        range: |_| (0.0, 6.0),
         decimals: 3,
         start: |_, r| r.vertical_range * 100.0,
     },

@@ -10,7 +10,8 @@ use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
 use crate::model::speed_laws::{
-    WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm, midstance_offset_cm,
+    DERIVED_VERTICAL_RANGE_CM, WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm,
+    midstance_offset_cm,
 };
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
@@ -547,8 +548,7 @@ impl WalkParams {
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
             tilt_range: deg(p.tilt_range_deg),
-            vertical_range: p.vertical_range_cm.unwrap_or((1.9 + 1.5 * (v - 0.7)).max(2.8 + 2.33 * fast)).max(0.0)
-                / 100.0,
+            vertical_range: p.vertical_range_cm.unwrap_or(DERIVED_VERTICAL_RANGE_CM).max(0.0) / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
             midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v)) / 100.0,

@@ -24,10 +24,12 @@ pub(crate) const WALK_RATIO_PER_175: f64 = 0.0055;
 /// mid-stance moves ahead with speed ([`midstance_offset_cm`]) and the bound falls: the drop
 /// falls 2 cm per m/s, under the bound, and the guard sets the height (at 1.6 m/s, 16 cm
 /// ahead, knee RMS 7.3 deg with a drop of 0 to 1.1 cm, 7.9 with 1.5; the earlier law's 1.85
-/// cm rose with speed for a pelvis 15 cm ahead).
+/// cm rose with speed for a pelvis 15 cm ahead). Session 14's sooner heel rise from 1.0 m/s
+/// ([`heel_rise_phase`]) moved the 1.3 m/s bound up to about 0.9 cm: the law takes 0.8 there
+/// (any drop up to 0.8 walks the same; 1.1 held the pelvis 0.07 cm lower).
 pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
     let fast = speed_mps - 1.3;
-    let drop = if fast < 0.0 { 1.1 + 3.5 * fast } else { 1.1 - 2.0 * fast };
+    let drop = if fast < 0.0 { 0.8 + 3.5 * fast } else { 0.8 - 2.0 * fast };
     drop.max(0.0)
 }
 
@@ -47,29 +49,54 @@ pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
 }
 
 /// Where the pelvis passes its lowest point, as a share of the double support after heel
-/// strike, at `speed_mps`: mid double support (the thesis's key) up to 1.3 m/s, 0.25 sooner
-/// per m/s faster, down to 0.4 from 1.7 m/s. The norms' hip is lowest near heel strike and
-/// already rising after it; in a fast walk the landing knee, held down by a pelvis still
-/// falling to mid double support, flexed 10 deg more than theirs in loading response. Knee
-/// RMS against the norms at 1.6 m/s for a share of 0.5 / 0.45 / 0.4 / 0.35: 7.3 / 6.3 / 5.7 /
-/// 5.9 deg (brisk, 1.75 m/s: 7.3 / 6.3 / 5.7 / 5.5, its ankle RMS 4.1 at 0.35); at 1.3 m/s
-/// 0.45 and 0.4 gain nothing (7.2, 7.4), and at 1.0 m/s and slower an earlier lowest point
-/// bends the ankle's shape (r 0.967 -> 0.934 at 0.4). The pelvis then rises less above its
-/// lowest point ([`heel_rise_phase`] gives that back): 0.33 sooner per m/s (0.4 at 1.6 m/s)
-/// left 1.6 m/s's vertical range at 1.3 m/s's, 2.49 cm.
+/// strike, at `speed_mps`: mid double support (the thesis's key) up to 1.0 m/s, 0.5 sooner
+/// per m/s faster to 0.35 at 1.3 m/s, then back up to 0.4 from 1.5 m/s. The norms' hip is
+/// lowest at heel strike and already rising after it (put through this leg chain,
+/// data/normative/joint_angles_by_speed.csv's stance hip is 2.9 cm below standing at 4 % of
+/// the cycle at 1.3 m/s, the walk's was 3.9): a pelvis still falling to mid double support
+/// holds the landing knee down through loading response. The sooner lowest point pays only
+/// with the double support as high as the legs reach ([`DERIVED_VERTICAL_RANGE_CM`]); below
+/// it the asked range sets the height and the sooner key only moves the same low point.
+/// Knee RMS against the speed-matched norms, double support at the reach guard, for a share
+/// of 0.5 / 0.45 / 0.4 / 0.35 / 0.3: 1.3 m/s 7.26 / 6.17 / 5.39 / 4.96 / 4.84 deg (ankle r
+/// 0.991 / 0.988 / 0.978 / 0.960 / 0.934); 1.6 m/s 8.21 / 6.96 / 5.87 / 5.28 / 5.27; 1.0 m/s
+/// 6.96 / 6.39 / 6.04 / 5.88 / 5.88 but the ankle's shape bends (r 0.967 / 0.949 / 0.922 /
+/// 0.888 / 0.847): in a slow walk the trailing ankle plantarflexes from 40 % instead of at
+/// 52 %. Above 1.3 m/s 0.35 would take the fast walks' knee another 0.6-0.8 deg, but the
+/// scheduled 0.8 -> 1.6 -> 1.0 m/s walk's first full-speed steps then changed the pelvis's
+/// velocity 1.21x as sharply per frame as a steady walk (tests/pace.rs holds 1.2x): the
+/// fall from the mid-stance key into a sooner double support is shorter.
 pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
-    (0.5 - 0.25 * (speed_mps - 1.3)).clamp(0.4, 0.5)
+    if speed_mps <= 1.3 {
+        (0.5 - 0.5 * (speed_mps - 1.0)).clamp(0.35, 0.5)
+    } else {
+        (0.35 + 0.25 * (speed_mps - 1.3)).min(0.4)
+    }
 }
 
-/// The cycle phase at which the stance heel rises at `speed_mps`: 0.31 up to 1.3 m/s, 0.1
-/// sooner per m/s faster. With the lowest point of the pelvis nearer heel strike
-/// ([`double_support_key_share`]) the fast walks' pelvis no longer fell below its heel-strike
-/// height, and its vertical range stopped rising with speed (2.52 / 2.69 / 2.79 cm at 1.3 /
-/// 1.6 / 1.75 m/s; Orendurff et al. 2004's rises 2.33 cm per m/s). A sooner heel rise lets the
-/// stance leg carry the mid-stance pelvis higher: 3.32 cm at 1.6 m/s and 3.81 at 1.75, the
-/// knee's RMS against the norms 6.4 deg at both (5.9 and 5.7 with the heel rising at 0.31,
-/// 7.3 and 7.3 with neither law). At 1.3 m/s a sooner heel rise flexes the knee (0.28: RMS
-/// 7.25 -> 8.26 deg).
+/// The vertical range a config that leaves `pelvis.vertical_range_cm` out asks for: none, so
+/// the double support is asked at the mid-stance height and the reach guard lowers it until
+/// both legs reach; the walked range is then what the legs' reach gives. The thesis's law
+/// (1.9 + 1.5 (v − 0.7) cm, 2.8 at 1.3 m/s) asked the pelvis below where the legs reach at
+/// every speed up to 1.3 m/s, and each centimetre it sat lower bent both knees at heel
+/// strike: knee RMS against the speed-matched norms 8.33 -> 7.72 deg at 0.8 m/s and, with
+/// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is
+/// the walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.65 cm at 0.8 m/s, 2.52 ->
+/// 2.07 at 1.3 with the heel rising sooner; 3.32 -> 3.37 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm; the
+/// norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 /
+/// 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs (docs/gait-model.md
+/// §12).
+pub(crate) const DERIVED_VERTICAL_RANGE_CM: f64 = 0.0;
+
+/// The cycle phase at which the stance heel rises at `speed_mps`: 0.31 up to 1.0 m/s, 0.1
+/// sooner per m/s to 0.28 at 1.3 m/s, then 1/30 sooner per m/s (0.27 at 1.6, 0.265 at 1.75).
+/// A sooner heel rise lets the stance leg carry the mid-stance pelvis higher, so the vertical
+/// range rises with speed: with the double support at the legs' reach
+/// ([`DERIVED_VERTICAL_RANGE_CM`]) the 1.3 m/s walk's range is 1.62 cm with the heel rising at
+/// 0.31 and 2.07 at 0.28, its knee RMS against the norms 4.97 and 4.91 deg, its ankle RMS 2.52
+/// and 2.13. At 1.0 m/s a sooner heel rise costs the knee its share inside +-2 SD (0.29: 78 %
+/// against 84 %). (Before the double support rose to the legs' reach, 0.28 at 1.3 m/s had
+/// flexed the knee: RMS 7.25 -> 8.26 deg.)
 pub(crate) fn heel_rise_phase(speed_mps: f64) -> f64 {
-    0.31 - 0.1 * (speed_mps - 1.3).max(0.0)
+    0.31 - 0.1 * (speed_mps - 1.0).clamp(0.0, 0.3) - (speed_mps - 1.3).max(0.0) / 30.0
 }
