@@ -50,7 +50,7 @@ pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
 
 /// Where the pelvis passes its lowest point, as a share of the double support after heel
 /// strike, at `speed_mps`: mid double support (the thesis's key) up to 1.0 m/s, 0.5 sooner
-/// per m/s faster to 0.35 at 1.3 m/s, then back up to 0.4 from 1.5 m/s. The norms' hip is
+/// per m/s faster to 0.35 at 1.3 m/s, then back up to 0.375 from 1.4 m/s. The norms' hip is
 /// lowest at heel strike and already rising after it (put through this leg chain,
 /// data/normative/joint_angles_by_speed.csv's stance hip is 2.9 cm below standing at 4 % of
 /// the cycle at 1.3 m/s, the walk's was 3.9): a pelvis still falling to mid double support
@@ -62,15 +62,16 @@ pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
 /// 0.991 / 0.988 / 0.978 / 0.960 / 0.934); 1.6 m/s 8.21 / 6.96 / 5.87 / 5.28 / 5.27; 1.0 m/s
 /// 6.96 / 6.39 / 6.04 / 5.88 / 5.88 but the ankle's shape bends (r 0.967 / 0.949 / 0.922 /
 /// 0.888 / 0.847): in a slow walk the trailing ankle plantarflexes from 40 % instead of at
-/// 52 %. Above 1.3 m/s 0.35 would take the fast walks' knee another 0.6-0.8 deg, but the
-/// scheduled 0.8 -> 1.6 -> 1.0 m/s walk's first full-speed steps then changed the pelvis's
-/// velocity 1.21x as sharply per frame as a steady walk (tests/pace.rs holds 1.2x): the
-/// fall from the mid-stance key into a sooner double support is shorter.
+/// 52 %. Above 1.3 m/s the scheduled 0.8 -> 1.6 -> 1.0 m/s walk's first full-speed steps
+/// change the pelvis's velocity more sharply per frame than a steady walk the sooner the
+/// fall from the mid-stance key ends (tests/pace.rs holds 1.2x): 0.35 / 0.375 / 0.4 give
+/// 1.21x / 1.18x / 1.13x, the 1.6 m/s knee 5.40 / 5.70 / 6.15 deg with 82 / 82 / 78 % of its
+/// cycle inside +-2 SD, brisk's 5.59 / 5.91 / 6.38.
 pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
     if speed_mps <= 1.3 {
         (0.5 - 0.5 * (speed_mps - 1.0)).clamp(0.35, 0.5)
     } else {
-        (0.35 + 0.25 * (speed_mps - 1.3)).min(0.4)
+        (0.35 + 0.25 * (speed_mps - 1.3)).min(0.375)
     }
 }
 
@@ -82,7 +83,7 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// strike: knee RMS against the speed-matched norms 8.33 -> 7.72 deg at 0.8 m/s and, with
 /// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is
 /// the walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.65 cm at 0.8 m/s, 2.52 ->
-/// 2.07 at 1.3 with the heel rising sooner; 3.32 -> 3.37 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm; the
+/// 2.07 at 1.3 with the heel rising sooner; 3.32 -> 3.17 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm; the
 /// norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 /
 /// 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs (docs/gait-model.md
 /// §12).
