@@ -6,11 +6,11 @@
 //! The targets are r >= 0.95, RMS <= 5 deg (ankle <= 4) and >= 80 % of the cycle
 //! inside +-2 SD. Measured 2026-11-28 against the speed-matched references, after session
 //! 14's double support at the legs' reach, its lowest point sooner above 1.0 m/s and the
-//! heel rising sooner from 1.0 m/s:
-//! - the hip's RMS and r meet them at every speed (2.1-3.7 deg);
-//! - the ankle's RMS (2.0-3.8 deg) and r (>= 0.964) at every speed;
+//! heel rising sooner from 1.0 m/s, and below 1.3 m/s the swing heel leading the design curve:
+//! - the hip's RMS and r meet them at every speed (2.1-4.1 deg);
+//! - the ankle's RMS (2.0-3.8 deg) and r (>= 0.962) at every speed;
 //! - the knee's r and its share inside +-2 SD (82-88 %) at every speed, its RMS at 1.3 m/s
-//!   (4.91 deg) but not at 0.8 / 1.0 / 1.6 m/s, stroll and brisk (5.7-7.7 deg): too flexed
+//!   (4.91 deg) but not at 0.8 / 1.0 / 1.6 m/s, stroll and brisk (5.7-6.8 deg): too flexed
 //!   at heel strike and late to extend in terminal swing.
 //!
 //! Against the single 1.245 m/s reference used before, the slow walks had read better than
@@ -39,17 +39,18 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 7.25 / 0.983 / 27; 2.69 / 0.991 / 0; session 12: 3.39 / 0.994 / 0; 7.57 / 0.982 / 35;
         // 2.87 / 0.988 / 16).
         ("configs/default.toml", &[], [(2.3, 0.99, 0.0), (5.0, 0.98, 18.0), (2.4, 0.96, 4.0)]),
-        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 3.40 / 0.991 / 0; 7.34 / 0.982 / 16;
-        // 2.20 / 0.968 / 0 (session 13: 3.44 / 0.992, 7.44 / 0.982 / 16, 2.22 / 0.969).
-        ("configs/stroll.toml", &[], [(3.7, 0.985, 0.0), (7.7, 0.975, 20.0), (2.5, 0.96, 4.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 3.73 / 0.991 / 0; 6.65 / 0.989 / 14;
+        // 2.14 / 0.965 / 0 (session 13: 3.44 / 0.992, 7.44 / 0.982 / 16, 2.22 / 0.969).
+        ("configs/stroll.toml", &[], [(4.0, 0.985, 0.0), (7.0, 0.98, 18.0), (2.4, 0.955, 4.0)]),
         // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.68 / 0.992 / 0; 5.91 / 0.974 / 12;
         // 3.60 / 0.978 / 6 (session 13: 2.52 / 0.991, 6.36 / 0.973 / 16, 3.50 / 0.979 / 6).
         ("configs/brisk.toml", &[], [(3.0, 0.985, 0.0), (6.2, 0.965, 16.0), (3.9, 0.97, 10.0)]),
-        // 3.71 / 0.987 / 0; 7.71 / 0.982 / 18; 2.04 / 0.964 / 0 (session 13: 3.89 / 0.989,
+        // 4.12 / 0.984 / 0; 6.84 / 0.989 / 12; 2.00 / 0.962 / 0 (session 13: 3.89 / 0.989,
         // 8.33 / 0.981 / 20, 2.18 / 0.968).
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(4.0, 0.98, 0.0), (8.1, 0.975, 20.0), (2.4, 0.955, 4.0)]),
-        // 3.27 / 0.993 / 0; 6.97 / 0.984 / 16; 2.37 / 0.967 / 0.
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.6, 0.985, 0.0), (7.3, 0.975, 20.0), (2.7, 0.96, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(4.4, 0.98, 0.0), (7.2, 0.98, 16.0), (2.3, 0.955, 4.0)]),
+        // 3.44 / 0.994 / 0; 6.40 / 0.989 / 16; 2.33 / 0.966 / 0 (session 13: 3.27 / 0.993,
+        // 6.95 / 0.984 / 16, 2.37 / 0.967).
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(3.7, 0.985, 0.0), (6.8, 0.98, 20.0), (2.6, 0.96, 4.0)]),
         // As the default.
         ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.3, 0.99, 0.0), (5.0, 0.98, 18.0), (2.4, 0.96, 4.0)]),
         // 2.21 / 0.993 / 0; 5.70 / 0.979 / 18; 2.80 / 0.981 / 2 (session 13: 2.10 / 0.993,

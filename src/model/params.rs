@@ -11,7 +11,7 @@ use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
 use crate::model::speed_laws::{
     DERIVED_VERTICAL_RANGE_CM, WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm,
-    midstance_offset_cm,
+    midstance_offset_cm, swing_lead,
 };
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
@@ -435,6 +435,9 @@ pub struct Resolved {
     /// Where the pelvis's double-support key (its lowest point) falls, as a share of the
     /// double support after heel strike.
     pub(crate) double_support_key: f64,
+    /// How far ahead of the swing-forward design curve the swing heel moves (share of the
+    /// swing's mid-point progress; the speed law `swing_lead`).
+    pub(crate) swing_lead: f64,
     /// Peak-to-peak pelvic rotation (rad).
     pub(crate) rotation_range: f64,
     /// Peak-to-peak pelvic obliquity (rad).
@@ -545,6 +548,7 @@ impl WalkParams {
             heel_rise: self.legs.heel_rise.unwrap_or(heel_rise_phase(v)),
             toe_off: self.legs.toe_off.unwrap_or((0.62 - 0.04 * fast).clamp(0.55, 0.70)),
             double_support_key: double_support_key_share(v),
+            swing_lead: swing_lead(v),
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
             tilt_range: deg(p.tilt_range_deg),

@@ -326,7 +326,7 @@ impl SwingCurvesAt {
     pub fn of(plan: &SwingPlan, s: f64) -> Self {
         SwingCurvesAt {
             s,
-            progress: plan.forward.eval(s),
+            progress: plan.progress(s),
             lateral: plan.lateral.eval(s),
             heel_height: plan.heel_height.eval(s),
             ankle_deg: plan.ankle_deg.eval(s),

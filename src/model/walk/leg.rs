@@ -89,6 +89,9 @@ pub struct SwingPlan {
     pub(crate) pitch_from: f64,
     /// Heel progress 0→1 toward the footfall.
     pub forward: Curve,
+    /// How far ahead of the design curve the heel moves forward, frozen when the step is
+    /// planned ([`SwingPlan::progress`]; the speed law `swing_lead`).
+    pub(crate) lead: f64,
     /// Weight toward the hip line.
     pub lateral: Curve,
     /// The ankle against the shank (deg, dorsiflexion +): the design curve with its start moved
@@ -98,6 +101,23 @@ pub struct SwingPlan {
     pub(crate) heel_height: Curve,
     /// Heel-height raises the 50-sample simulation made (count).
     pub raises: u32,
+}
+
+impl SwingPlan {
+    /// The heel's forward progress at swing fraction `s`: the forward curve at `s` moved
+    /// ahead by `lead · s · (1 − s)`, so that both ends stay where they are.
+    #[must_use]
+    pub fn progress(&self, s: f64) -> f64 {
+        self.forward.eval(led_fraction(s, self.lead))
+    }
+}
+
+/// Swing fraction `s` moved ahead by `lead · s · (1 − s)`: the ends stay, and for a lead up
+/// to 1 the result still rises with `s` (its slope is 1 + lead at toe-off, 1 − lead at heel
+/// strike), so the heel never steps back.
+#[must_use]
+pub(crate) fn led_fraction(s: f64, lead: f64) -> f64 {
+    s + lead * s * (1.0 - s)
 }
 
 /// What a leg does at one instant: the IK input.
@@ -191,4 +211,22 @@ pub(crate) struct PhaseBounds {
     pub(crate) foot_flat: f64,
     pub(crate) heel_rise: f64,
     pub(crate) toe_off: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::led_fraction;
+
+    #[test]
+    fn a_lead_moves_the_swing_ahead_between_fixed_ends_and_never_back() {
+        for lead in [0.0, 0.15, 0.3, 1.0] {
+            assert_eq!(led_fraction(0.0, lead), 0.0);
+            assert_eq!(led_fraction(1.0, lead), 1.0);
+            let samples: Vec<f64> = (0..=100).map(|i| led_fraction(f64::from(i) / 100.0, lead)).collect();
+            assert!(samples.windows(2).all(|w| w[1] >= w[0]), "lead {lead}");
+        }
+        // 0.8 m/s's lead: at three quarters of the swing the heel is where the design curve
+        // has it at 0.778.
+        assert!((led_fraction(0.75, 0.15) - 0.778_125).abs() < 1e-12);
+    }
 }

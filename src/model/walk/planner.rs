@@ -50,8 +50,7 @@ impl Walker {
         if kind == StepKind::Braking {
             self.begin_settle(at, &to);
         }
-        // Swing planning step 1: the ankle curve, and the foot angle it strikes at under the
-        // pelvis planned so far.
+        // Swing planning step 1: the ankle curve, the foot angle it strikes at under the pelvis.
         let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
         let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
         let landing = LegState {
@@ -75,6 +74,7 @@ impl Walker {
             toe_bend_from: toe_off_pose.target.toe_bend,
             pitch_from: toe_off_pose.target.pitch,
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
+            lead: self.swing_lead(ground_from, &to),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
             ankle_deg,
             heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to, lift),
@@ -116,6 +116,13 @@ impl Walker {
         self.legs[i].swing = Some(plan);
         self.step_planned(kind, &to);
         self.lap(FramePart::SwingPlanning);
+    }
+
+    /// The swing heel's lead ahead of the forward design curve (the speed law `swing_lead`),
+    /// on level steps only: onto a stair or down a slope a heel brought forward sooner met a
+    /// nosing before the swing simulation saw it (stairs_down at 0.5 m/s).
+    fn swing_lead(&self, ground_from: f64, to: &Footfall) -> f64 {
+        if (to.heel.y - ground_from).abs() < 0.01 { self.gait.r.swing_lead } else { 0.0 }
     }
 
     /// The step's ankle curve and the foot–ground angle it strikes `to` at with the hip at
