@@ -121,7 +121,8 @@ impl Walker {
         if first.is_finite() {
             let heel_rise = self.legs[i].heel_rise;
             let sample = (heel_rise - self.gait.r.foot_flat) / 8.0;
-            let sooner = (first - sample - strike_phase).max(playing_at - strike_phase + 1e-6);
+            let sooner =
+                (first - sample - strike_phase).max(playing_at - strike_phase + 1e-6).max(self.gait.r.foot_flat);
             self.legs[i].heel_rise = heel_rise.min(sooner);
         }
     }
