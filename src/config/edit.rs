@@ -1,6 +1,7 @@
 //! Writing parameter values into an existing config text with its comments and layout kept
 //! (toml_edit): the lab's save and the report's `config.toml` after `--set`.
 
+use crate::config::render::{derived_value, toml_number};
 use crate::config::schema::{self, Value};
 use crate::model::params::WalkParams;
 use toml_edit::{DocumentMut, Item, Table};
@@ -42,7 +43,39 @@ pub fn edited_text(source_text: &str, params: &WalkParams, keys: &[&str]) -> Res
             }
         }
     }
-    Ok(doc.to_string())
+    Ok(refresh_derived(&doc.to_string(), params))
+}
+
+/// `text` with each `# name = value  # derived` comment (as `gaitlab init` writes them)
+/// showing what the key derives to for `params`. Kept from the source, they showed the old
+/// walk's values: a report of the default config with `--set walk.speed_mps=0.8` listed
+/// `# stride_m = 1.31  # derived` for a walk whose stride was 1.03 m.
+fn refresh_derived(text: &str, params: &WalkParams) -> String {
+    let r = params.resolve();
+    let mut group = String::new();
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        let body = line.trim_end_matches(['\n', '\r']);
+        if let Some(name) = body.strip_prefix('[').and_then(|h| h.strip_suffix(']')) {
+            group = name.trim_matches(['[', ']']).to_string();
+        }
+        let refreshed = body
+            .strip_prefix("# ")
+            .and_then(|rest| rest.strip_suffix("  # derived"))
+            .and_then(|assignment| assignment.split_once(" = "))
+            .and_then(|(name, _)| {
+                let value = derived_value(&format!("{group}.{name}"), params, &r)?;
+                Some(format!("# {name} = {}  # derived", toml_number(value)))
+            });
+        match refreshed {
+            Some(new) => {
+                out.push_str(&new);
+                out.push_str(&line[body.len()..]);
+            }
+            None => out.push_str(line),
+        }
+    }
+    out
 }
 
 /// Writes one curve override as `[curves.<name>] points = [[x, y], ...]` (a table appended
@@ -103,6 +136,20 @@ fn set_points(doc: &mut DocumentMut, name: &str, points: &[(f64, f64)], trailing
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn derived_comments_show_the_edited_walks_values() {
+        let source = crate::config::render::render(&WalkParams::default(), "t");
+        assert!(source.contains("# stride_m = 1.31  # derived\n"), "{source}");
+        let params = crate::config::load_text(&source, "t", &["walk.speed_mps=0.8".into()]).unwrap();
+        let text = edited_text(&source, &params, &["walk.speed_mps"]).unwrap();
+        let r = params.resolve();
+        assert!(text.contains(&format!("# stride_m = {}  # derived\n", toml_number(r.stride_m))), "{text}");
+        assert!(text.contains("# heel_rise = 0.31  # derived\n") && text.contains("speed_mps = 0.8\n"));
+        // Only the derived comments moved: the same lines, the same count of them.
+        assert_eq!(text.lines().count(), source.lines().count());
+        assert_eq!(crate::config::load_text(&text, "t", &[]).unwrap(), params);
+    }
 
     #[test]
     fn a_curve_override_is_appended_replaced_and_removed() {
