@@ -92,7 +92,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("pelvis_rotation_range_deg", "deg", "pelvic rotation range"),
     ("hip_flex_max_deg", "deg", "peak hip flexion"),
     ("hip_ext_max_deg", "deg", "peak hip extension"),
-    ("knee_flex_max_stance_deg", "deg", "peak knee flexion in stance"),
+    ("knee_flex_max_stance_deg", "deg", "peak knee flexion in stance (at toe-off, where pre-swing ends)"),
     ("knee_flex_max_swing_deg", "deg", "peak knee flexion in swing"),
     ("ankle_dorsi_max_deg", "deg", "peak ankle dorsiflexion"),
     ("ankle_plantar_max_deg", "deg", "peak ankle plantarflexion"),
