@@ -199,7 +199,7 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
-    /// The walk's joint curves against measured human gait (mean +- SD every 1 % of the cycle)
+    /// The walk's joint curves against measured human gait (the reference's mean +- SD, read every 2 % of the cycle)
     Compare {
         /// Config file.
         config: PathBuf,
