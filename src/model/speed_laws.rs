@@ -59,7 +59,8 @@ pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
 /// it the asked range sets the height and the sooner key only moves the same low point.
 /// Knee RMS against the speed-matched norms, double support at the reach guard, for a share
 /// of 0.5 / 0.45 / 0.4 / 0.35 / 0.3: 1.3 m/s 7.26 / 6.17 / 5.39 / 4.96 / 4.84 deg (ankle r
-/// 0.991 / 0.988 / 0.978 / 0.960 / 0.934); 1.6 m/s 8.21 / 6.96 / 5.87 / 5.28 / 5.27; 1.0 m/s
+/// 0.991 / 0.988 / 0.978 / 0.960 / 0.934); 1.6 m/s (heel rise at 0.28) 8.21 / 6.96 / 5.87 /
+/// 5.28 / 5.27; 1.0 m/s
 /// 6.96 / 6.39 / 6.04 / 5.88 / 5.88 but the ankle's shape bends (r 0.967 / 0.949 / 0.922 /
 /// 0.888 / 0.847): in a slow walk the trailing ankle plantarflexes from 40 % instead of at
 /// 52 %. Above 1.3 m/s the scheduled 0.8 -> 1.6 -> 1.0 m/s walk's first full-speed steps
@@ -82,11 +83,11 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// every speed up to 1.3 m/s, and each centimetre it sat lower bent both knees at heel
 /// strike: knee RMS against the speed-matched norms 8.33 -> 7.72 deg at 0.8 m/s and, with
 /// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is
-/// the walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.65 cm at 0.8 m/s, 2.52 ->
-/// 2.07 at 1.3 with the heel rising sooner; 3.32 -> 3.17 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm; the
-/// norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 /
-/// 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs (docs/gait-model.md
-/// §12).
+/// the walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.66 cm at 0.8 m/s, 2.52 ->
+/// 2.07 at 1.3 with the heel rising sooner, 3.32 -> 3.17 at 1.6), below Orendurff et al.
+/// 2004's 2.7-4.8 cm; the norms' own stance hip, put through this leg chain, rises 2.5 / 2.9
+/// / 3.5 / 4.1 cm at 0.8 / 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under
+/// theirs (docs/gait-model.md §12).
 pub(crate) const DERIVED_VERTICAL_RANGE_CM: f64 = 0.0;
 
 /// The cycle phase at which the stance heel rises at `speed_mps`: 0.31 up to 1.0 m/s, 0.1
