@@ -1,7 +1,7 @@
 //! Writing parameter values into an existing config text with its comments and layout kept
 //! (toml_edit): the lab's save and the report's `config.toml` after `--set`.
 
-use crate::config::render::{derived_value, toml_number};
+use crate::config::render::{derived_comment, derived_value, toml_number};
 use crate::config::schema::{self, Value};
 use crate::model::params::WalkParams;
 use toml_edit::{DocumentMut, Item, Table};
@@ -65,7 +65,7 @@ fn refresh_derived(text: &str, params: &WalkParams) -> String {
             .and_then(|assignment| assignment.split_once(" = "))
             .and_then(|(name, _)| {
                 let value = derived_value(&format!("{group}.{name}"), params, &r)?;
-                Some(format!("# {name} = {}  # derived", toml_number(value)))
+                Some(derived_comment(name, &toml_number(value)))
             });
         match refreshed {
             Some(new) => {

@@ -14,6 +14,13 @@ pub(crate) fn toml_number(x: f64) -> String {
     if rounded.fract() == 0.0 { format!("{rounded:.1}") } else { format!("{rounded}") }
 }
 
+/// The commented-out line a derived key is shown as (no newline): `# name = value  # derived`.
+/// `config::edit` finds these lines by this form to show a written walk's values.
+#[must_use]
+pub(crate) fn derived_comment(name: &str, value: &str) -> String {
+    format!("# {name} = {value}  # derived")
+}
+
 /// What a derived key resolves to, in the key's unit.
 #[must_use]
 pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f64> {
@@ -81,7 +88,8 @@ pub fn render(params: &WalkParams, title: &str) -> String {
                     let derived = derived_value(spec.key, params, &r).map_or("?".into(), toml_number);
                     let auto = matches!(spec.kind, Kind::Real { auto: true, .. });
                     debug_assert!(auto);
-                    out.push_str(&format!("# {} = {derived}  # derived\n", spec.name()));
+                    out.push_str(&derived_comment(spec.name(), &derived));
+                    out.push('\n');
                 }
             }
         }
