@@ -8,7 +8,7 @@
 //! 14's double support at the legs' reach, its lowest point sooner above 1.0 m/s and the
 //! heel rising sooner from 1.0 m/s, and below 1.3 m/s the swing heel leading the design curve:
 //! - the hip's RMS and r meet them at every speed (2.1-4.1 deg);
-//! - the ankle's RMS (2.0-3.8 deg) and r (>= 0.962) at every speed;
+//! - the ankle's RMS (2.0-3.6 deg) and r (>= 0.962) at every speed;
 //! - the knee's r and its share inside +-2 SD (82-88 %) at every speed, its RMS at 1.3 m/s
 //!   (4.91 deg) but not at 0.8 / 1.0 / 1.6 m/s, stroll and brisk (5.7-6.8 deg): too flexed
 //!   at heel strike and late to extend in terminal swing.

@@ -435,8 +435,8 @@ pub struct Resolved {
     /// Where the pelvis's double-support key (its lowest point) falls, as a share of the
     /// double support after heel strike.
     pub(crate) double_support_key: f64,
-    /// How far ahead of the swing-forward design curve the swing heel moves (share of the
-    /// swing's mid-point progress; the speed law `swing_lead`).
+    /// How far ahead of the swing-forward design curve the swing heel moves: the curve is read
+    /// at s + lead·s·(1 − s) of the swing (the speed law `swing_lead`).
     pub(crate) swing_lead: f64,
     /// Peak-to-peak pelvic rotation (rad).
     pub(crate) rotation_range: f64,

@@ -25,8 +25,8 @@ pub(crate) const WALK_RATIO_PER_175: f64 = 0.0055;
 /// falls 2 cm per m/s, under the bound, and the guard sets the height (at 1.6 m/s, 16 cm
 /// ahead, knee RMS 7.3 deg with a drop of 0 to 1.1 cm, 7.9 with 1.5; the earlier law's 1.85
 /// cm rose with speed for a pelvis 15 cm ahead). Session 14's sooner heel rise from 1.0 m/s
-/// ([`heel_rise_phase`]) moved the 1.3 m/s bound up to about 0.9 cm: the law takes 0.8 there
-/// (any drop up to 0.8 walks the same; 1.1 held the pelvis 0.07 cm lower).
+/// ([`heel_rise_phase`]) moved the 1.3 m/s bound to between 0.8 and 1.1 cm: the law takes 0.8
+/// there (drops of 0 to 0.8 walk the same; 1.1 took the walked vertical range 2.07 -> 2.00 cm).
 pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
     let fast = speed_mps - 1.3;
     let drop = if fast < 0.0 { 0.8 + 3.5 * fast } else { 0.8 - 2.0 * fast };
@@ -58,7 +58,7 @@ pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
 /// with the double support as high as the legs reach ([`DERIVED_VERTICAL_RANGE_CM`]); below
 /// it the asked range sets the height and the sooner key only moves the same low point.
 /// Knee RMS against the speed-matched norms, double support at the reach guard, for a share
-/// of 0.5 / 0.45 / 0.4 / 0.35 / 0.3: 1.3 m/s 7.26 / 6.17 / 5.39 / 4.96 / 4.84 deg (ankle r
+/// of 0.5 / 0.45 / 0.4 / 0.35 / 0.3: 1.3 m/s (heel rise at 0.31) 7.26 / 6.17 / 5.39 / 4.96 / 4.84 deg (ankle r
 /// 0.991 / 0.988 / 0.978 / 0.960 / 0.934); 1.6 m/s (heel rise at 0.28) 8.21 / 6.96 / 5.87 /
 /// 5.28 / 5.27; 1.0 m/s
 /// 6.96 / 6.39 / 6.04 / 5.88 / 5.88 but the ankle's shape bends (r 0.967 / 0.949 / 0.922 /
@@ -111,7 +111,8 @@ pub(crate) fn heel_rise_phase(speed_mps: f64) -> f64 {
 /// Knee / hip RMS against the speed-matched norms at 0.8 m/s for 0 / 0.15 / 0.23 / 0.3:
 /// 7.71 / 6.84 / 6.68 / 6.67 and 3.71 / 4.12 / 4.58 / 5.15 deg (the hip flexes further as the
 /// leg reaches ahead; 0.15 keeps their sum lowest); at 1.0 m/s 0.09 gives 6.40 / 3.44 (6.97 /
-/// 3.27 without). At 1.3 m/s any lead made the knee worse (0.1: 4.91 -> 5.36 deg).
+/// 3.27 without). At 1.3 m/s a sooner heel made the knee worse: the forward curve's keys 0.03
+/// to 0.04 sooner (as a lead of 0.13 to 0.26 moves them) took it 4.91 -> 5.36 deg.
 pub(crate) fn swing_lead(speed_mps: f64) -> f64 {
     (0.3 * (1.3 - speed_mps)).clamp(0.0, 0.3)
 }
