@@ -111,7 +111,7 @@ pub struct FitOptions {
 
 impl Default for FitOptions {
     fn default() -> Self {
-        FitOptions { evaluations: 200, cycles: 10 }
+        FitOptions { evaluations: 600, cycles: 10 }
     }
 }
 

@@ -63,7 +63,9 @@ pub fn checks(frames: &[Frame]) -> Checks {
             let leg = &f.legs[i];
             let contact = match leg.leg_phase {
                 LegPhase::LoadingResponse => leg.heel,
-                LegPhase::Midstance => leg.ankle,
+                // The toe, not the ankle: a leg past reach after a live change lifts its heel
+                // about the planted ball (`Gait::target_of`), which is no slide.
+                LegPhase::Midstance => leg.toe,
                 LegPhase::HeelRise => leg.toe,
                 LegPhase::Swing => {
                     start = None;

@@ -187,7 +187,7 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         out: Option<PathBuf>,
         /// Walks the search may cost, 10 to 5000
-        #[arg(long, default_value_t = 200)]
+        #[arg(long, default_value_t = 600)]
         evaluations: u32,
         /// Gait cycles of each walk, 4 to 50 (a reach failure in a later cycle is not seen)
         #[arg(long, default_value_t = 10)]

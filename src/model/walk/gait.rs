@@ -13,9 +13,8 @@ use crate::model::ik::softened_distance;
 use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan, foot_rotation};
+use crate::model::walk::leg::{Footfall, LegPhase, LegState, LegTarget, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
-use crate::model::walk::pose::solve_leg;
 use glam::{DQuat, DVec3};
 
 /// Stride the heel-rise curve is designed for (m) [fig 6.5].
@@ -26,8 +25,33 @@ pub const MAX_HEEL_RISE: f64 = 1.45;
 pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 
 /// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
-/// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 5° limit).
+/// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 3.2° limit).
 const REACH_EASE: f64 = 0.995;
+
+/// How far inside full reach (m) a stance leg past it is brought by rolling its foot: the
+/// IK's own tolerance is 1e-9 m.
+const REACH_RESCUE_GAP: f64 = 1e-7;
+
+/// Steepest extra toe-up pitch (rad) the heel rocker may keep to let a leg reach.
+const MAX_HEEL_ROCKER_RESCUE: f64 = 0.1;
+
+/// The heel rocker's foot pitch, kept toes-up just enough that a leg whose hip has run past
+/// full reach (a live change between the guard's samples) reaches its heel, which stays
+/// planted: the ankle swings back and up about the heel toward the hip. Unchanged within reach
+/// or if [`MAX_HEEL_ROCKER_RESCUE`] would not do.
+fn heel_rocker_to_reach(heel: DVec3, yaw: f64, pitch: f64, heel_local: DVec3, hip: DVec3, reach: f64) -> f64 {
+    let limit = reach - REACH_RESCUE_GAP;
+    let distance = |extra: f64| hip.distance(heel - foot_rotation(yaw, pitch + extra) * heel_local);
+    if distance(0.0) <= limit || distance(MAX_HEEL_ROCKER_RESCUE) > limit {
+        return pitch;
+    }
+    let (mut lo, mut hi) = (0.0, MAX_HEEL_ROCKER_RESCUE);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if distance(mid) > limit { lo = mid } else { hi = mid }
+    }
+    pitch + hi
+}
 
 /// The cycle curves played live, in real units (rad or m).
 #[derive(Clone, Debug)]
@@ -185,16 +209,33 @@ impl Gait {
             LegPhase::LoadingResponse => {
                 let s = (q / r.foot_flat).clamp(0.0, 1.0);
                 let pitch = ff.ground_angle + leg.strike_angle * (1.0 - s);
+                let pitch = heel_rocker_to_reach(leg.anchor, ff.yaw, pitch, dims.heel_local(), hip, dims.leg_reach());
                 let ankle = leg.anchor - foot_rotation(ff.yaw, pitch) * dims.heel_local();
                 LegTarget { ankle, pitch, toe_bend: 0.0, yaw: ff.yaw, extra_heel_rise: 0.0 }
             }
-            LegPhase::Midstance => LegTarget {
-                ankle: leg.anchor,
-                pitch: ff.ground_angle,
-                toe_bend: 0.0,
-                yaw: ff.yaw,
-                extra_heel_rise: 0.0,
-            },
+            LegPhase::Midstance => {
+                let ball = leg.anchor + foot_rotation(ff.yaw, ff.ground_angle) * dims.ball_local();
+                // Past full reach (never on a planned step: the guard keeps the hip within the
+                // margin) the heel leaves the ground just enough, the ball planted.
+                let angle = if hip.distance(leg.anchor) > dims.leg_reach() - REACH_RESCUE_GAP {
+                    heel_rise_to_reach(ball, ff, dims.ball_local(), hip, dims.leg_reach() - REACH_RESCUE_GAP, 0.0)
+                        .unwrap_or(0.0)
+                } else {
+                    0.0
+                };
+                let ankle = if angle == 0.0 {
+                    leg.anchor
+                } else {
+                    ball - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local()
+                };
+                LegTarget {
+                    ankle,
+                    pitch: ff.ground_angle - angle,
+                    toe_bend: angle,
+                    yaw: ff.yaw,
+                    extra_heel_rise: angle,
+                }
+            }
             LegPhase::HeelRise => {
                 let s = ((q - leg.heel_rise) / (leg.toe_off - leg.heel_rise)).clamp(0.0, 1.0);
                 let curve_angle =
@@ -238,9 +279,10 @@ impl Gait {
     }
 
     /// Moves a copy of a stance leg's state forward to master phase `phase` through its stance
-    /// phase changes, with the pelvis of `plan`: what the leg will be doing then, by the same
-    /// code the walk runs. Stops before toe-off (a swing needs planning, not projection).
-    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
+    /// phase changes: what the leg will be doing then, by the same code the walk runs. Stops
+    /// before toe-off (a swing needs planning, not projection). The pelvis does not enter: each
+    /// stance phase starts from the flat foot's contact point.
+    pub fn project_stance(&self, leg: &mut LegState, phase: f64) {
         loop {
             let end = match leg.phase {
                 LegPhase::LoadingResponse => self.r.foot_flat,
@@ -251,9 +293,7 @@ impl Gait {
             if phase < boundary {
                 return;
             }
-            let hip = self.pelvis_with_plan(plan, boundary).hip(leg.side.sign());
-            let pose = solve_leg(&self.r, hip, self.target_of(leg, boundary, hip));
-            enter_stance_phase(leg, &pose, &self.r);
+            enter_stance_phase(leg, &self.r);
         }
     }
 }
@@ -283,18 +323,20 @@ pub fn place_footfall(terrain: &Terrain, r: &Resolved, step: i64, side: Side, no
     }
 }
 
-/// Moves a stance leg into its next stance phase, given its pose at the boundary: midstance
-/// holds the ankle where loading response left it; heel rise holds the toe joint of the flat
-/// foot and freezes the heel-rise curve's stride scale.
-pub fn enter_stance_phase(leg: &mut LegState, pose_at_boundary: &LegPose, r: &Resolved) {
+/// Moves a stance leg into its next stance phase: midstance holds the ankle of the foot laid
+/// flat about its heel; heel rise holds the toe joint of the flat foot and freezes the
+/// heel-rise curve's stride scale.
+pub fn enter_stance_phase(leg: &mut LegState, r: &Resolved) {
     match leg.phase {
+        // The flat foot's ankle and ball, not the target's: a leg rolled to reach at the
+        // boundary (`heel_rocker_to_reach`, the mid-stance heel rescue) keeps its contact point.
         LegPhase::LoadingResponse => {
-            leg.anchor = pose_at_boundary.target.ankle;
+            let flat = foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle);
+            leg.anchor -= flat * r.dims.heel_local();
             leg.phase = LegPhase::Midstance;
         }
         LegPhase::Midstance => {
-            leg.anchor = pose_at_boundary.target.ankle
-                + foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
+            leg.anchor += foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
             leg.heel_rise_scale = r.stride_m / HEEL_RISE_DESIGN_STRIDE_M;
             leg.toe_off = r.toe_off;
             leg.phase = LegPhase::HeelRise;
@@ -440,4 +482,36 @@ pub fn heel_rise_to_reach(
         .into_iter()
         .filter(|beta| *beta >= from - 1e-12 && *beta <= MAX_HEEL_RISE)
         .min_by(f64::total_cmp)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::body::{BodyDims, Sex};
+
+    #[test]
+    fn a_leg_past_reach_keeps_its_heel_down_and_its_toes_up_just_enough() {
+        let d = BodyDims::from_height(1.75, Sex::Male);
+        let heel = DVec3::new(0.3, 0.0, 0.1);
+        let (yaw, pitch) = (0.05, 0.08);
+        let ankle_at = |p: f64| heel - foot_rotation(yaw, p) * d.heel_local();
+        let reach = d.leg_reach();
+        // The hip behind and above the landing ankle, `past` beyond full reach of it.
+        let along = DVec3::new(-0.35, 1.0, 0.0).normalize();
+        for past in [0.0001, 0.0005, 0.002] {
+            let hip = ankle_at(pitch) + along * (reach + past);
+            let rolled = heel_rocker_to_reach(heel, yaw, pitch, d.heel_local(), hip, reach);
+            assert!(rolled > pitch, "{past}");
+            let gap = reach - hip.distance(ankle_at(rolled));
+            assert!((0.0..2e-7).contains(&gap), "{past}: {gap}");
+            // The least roll that reaches: a hundredth of a degree less does not.
+            assert!(hip.distance(ankle_at(rolled - 1e-4)) > reach - REACH_RESCUE_GAP, "{past}");
+        }
+        // Within reach nothing moves; too far for the steepest rescue, nothing moves either
+        // (the IK then reports the failure).
+        let near = ankle_at(pitch) + along * (reach - 0.001);
+        assert_eq!(heel_rocker_to_reach(heel, yaw, pitch, d.heel_local(), near, reach), pitch);
+        let far = ankle_at(pitch) + along * (reach + 0.05);
+        assert_eq!(heel_rocker_to_reach(heel, yaw, pitch, d.heel_local(), far, reach), pitch);
+    }
 }

@@ -388,8 +388,8 @@ impl Walker {
     }
 
     /// A copy of a stance leg's state moved forward to `phase` (see [`Gait::project_stance`]).
-    pub fn project_stance(&self, plan: &PelvisPlan, leg: &mut LegState, phase: f64) {
-        self.gait.project_stance(plan, leg, phase);
+    pub fn project_stance(&self, leg: &mut LegState, phase: f64) {
+        self.gait.project_stance(leg, phase);
     }
 
     /// Gives the walk a clock to time each step's pelvis search with (the records'
@@ -424,9 +424,9 @@ impl Walker {
         let pose = self.legs[i].pose;
         let next = self.legs[i].phase.next();
         match next {
-            LegPhase::Midstance => enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r),
+            LegPhase::Midstance => enter_stance_phase(&mut self.legs[i], &self.gait.r),
             LegPhase::HeelRise => {
-                enter_stance_phase(&mut self.legs[i], &pose, &self.gait.r);
+                enter_stance_phase(&mut self.legs[i], &self.gait.r);
                 self.legs[i].heel_rise_scale *= self.closing_heel_rise_share(&self.legs[i]);
             }
             LegPhase::Swing => {

@@ -207,7 +207,7 @@ impl StepProblem {
             let step = (to - from) / (per_half - 1) as f64;
             for i in 0..per_half {
                 let phase = from + step * i as f64;
-                gait.project_stance(&plan, &mut leg, phase);
+                gait.project_stance(&mut leg, phase);
                 let pelvis = match self.orientations.get(half * per_half + i) {
                     Some(cached) => {
                         let mut pose = *cached;
