@@ -119,6 +119,27 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
         .filter(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.contains("Fukuchi 2018")))
         .count();
     assert_eq!(legends, 3, "the normative band is named in the hip, knee and ankle charts");
+    // Over 4 cycles (2 measured) the legs differ by 0.5 deg or more somewhere: plain "left".
+    assert!(doc.descendants().filter_map(|n| n.text()).all(|t| !t.contains("under right")));
+    assert!(doc.descendants().any(|n| n.text().is_some_and(|t| t.trim() == "left")));
+    std::fs::remove_dir_all(&dir).unwrap();
+    // Over the default 10 cycles the left leg lies under the right (within 0.1-0.4 deg): each
+    // chart's legend says so and by how much, so the left curve does not look missing.
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+        .args(["report", "configs/default.toml", "--out", dir.to_str().unwrap()])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(dir.join("plots/joints.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let under: Vec<f64> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().and_then(|t| t.trim().strip_prefix("left (under right, within ")))
+        .filter_map(|t| t.strip_suffix(" deg)")?.parse().ok())
+        .collect();
+    assert!(under.len() == 3 && under.iter().all(|d| (0.0..0.5).contains(d)), "{under:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -145,14 +145,23 @@ fn config_toml_holds_the_set_values_and_reloads_to_the_same_walk() {
         "walk.sway=1.7",
         "--set",
         "legs.knee_lift_cm=6.5",
+        "--set",
+        "walk.speed_mps=0.45",
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    // The preset's words are quoted as its own; the speed walked is stated apart from them.
+    let summary = read(&dir, "summary.md");
+    assert!(
+        summary.contains("\n\nPreset: \"walking up a flight of 8 shallow outdoor stairs")
+            && summary.contains(", walked at 0.45 m/s (`walk.speed_mps`) on stairs terrain; 4 cycles at 60 fps"),
+        "{summary}"
+    );
     let text = read(&dir, "config.toml");
     assert!(text.contains("sway = 1.7") && text.contains("knee_lift_cm = 6.5"), "{text}");
     let from_report = gaitlab::config::load(&dir.join("config.toml"), &[]).unwrap();
     let direct = gaitlab::config::load(
         &Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/stairs_up.toml"),
-        &["walk.sway=1.7".into(), "legs.knee_lift_cm=6.5".into()],
+        &["walk.sway=1.7".into(), "legs.knee_lift_cm=6.5".into(), "walk.speed_mps=0.45".into()],
     )
     .unwrap();
     assert_eq!(from_report, direct);

@@ -309,14 +309,21 @@ fn summary_md(
 /// terrain, the speed, how long, and which walks it is compared with.
 fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)]) -> String {
     let p = input.params;
-    let description =
-        input.source_text.lines().next().and_then(|l| l.strip_prefix("# preset: ")).unwrap_or("custom config");
+    // The preset's description is its author's words and may name another speed than the one
+    // walked (`--set walk.speed_mps=0.8` on stroll's "at 0.9 m/s"): quoted as the preset's, and
+    // the walked speed stated on its own.
+    let description = input
+        .source_text
+        .lines()
+        .next()
+        .and_then(|l| l.strip_prefix("# preset: "))
+        .map_or_else(|| "A custom config".to_string(), |d| format!("Preset: \"{d}\""));
     let terrain = crate::config::schema::spec("terrain.kind").map_or(String::new(), |k| match (k.get)(p) {
         crate::config::schema::Value::Word(w) => w.to_string(),
         _ => String::new(),
     });
     format!(
-        "# gaitlab report: {}\n\n{description}; terrain: {terrain}; walk.speed_mps = {}; {} cycles at {} fps \
+        "# gaitlab report: {}\n\n{description}, walked at {} m/s (`walk.speed_mps`) on {terrain} terrain; {} cycles at {} fps \
          (the first cycle is start-up and not measured). Config: [config.toml](config.toml).\n\n\
          {}",
         input.name,

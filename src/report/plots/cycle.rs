@@ -210,8 +210,14 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         for (k, (walk, d)) in walks.iter().enumerate() {
             let f = &d.run.frames;
             if walks.len() == 1 {
-                cycles.push(("right".to_string(), RIGHT, d.cycle(0, &|i| pick(&f[i].legs[0]))));
-                cycles.push(("left".to_string(), LEFT, d.cycle(1, &|i| pick(&f[i].legs[1]))));
+                let (right, left) = (d.cycle(0, &|i| pick(&f[i].legs[0])), d.cycle(1, &|i| pick(&f[i].legs[1])));
+                // A steady level walk's legs mirror each other: the left curve is drawn but lies
+                // under the right, so the legend says so rather than leave it looking missing.
+                let apart = right.mean.iter().zip(&left.mean).map(|(a, b)| (a.1 - b.1).abs()).fold(0.0, f64::max);
+                let left_name =
+                    if apart < 0.5 { format!("left (under right, within {apart:.1} deg)") } else { "left".to_string() };
+                cycles.push(("right".to_string(), RIGHT, right));
+                cycles.push((left_name, LEFT, left));
             } else {
                 cycles.push((walk.clone(), PALETTE[k % PALETTE.len()], d.cycle(0, &|i| pick(&f[i].legs[0]))));
             }
