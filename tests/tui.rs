@@ -677,9 +677,9 @@ fn optimiser_columns_are_whole_or_hidden() {
     assert_eq!(app.panel, Panel::Optimiser);
     let header = |shown: &str| shown.lines().find(|l| l.contains("ratio cost")).map(str::to_string);
     let narrow = header(&screen(&app, 80, 24)).expect("the table's header at 80x24");
-    assert!(narrow.contains("feas") && !narrow.contains(" us"), "{narrow}");
+    assert!(narrow.contains("feas") && !narrow.contains(" µs"), "{narrow}");
     let wide = header(&screen(&app, 160, 48)).expect("the table's header at 160x48");
-    assert!(wide.contains("feas  us"), "{wide}");
+    assert!(wide.contains("feas  µs"), "{wide}");
 }
 
 /// A re-run of the optimiser is named in words over its row, apart from the walk's own steps:
@@ -789,4 +789,30 @@ fn the_two_curve_pelvis_charts_name_their_curves_in_their_colours() {
     assert!(app.point.is_some(), "a control point is selected");
     let after = braille_in(&app, data.lines[0].1);
     assert!(after * 10 > before * 9, "the rise's own colour in {after} cells while editing, {before} before");
+}
+
+/// On the small screen the curve chart is a tab: `c` from the Parameters tab shows it (the
+/// chart it turned was hidden before), the next `c` turns it; on the large screen, where the
+/// chart is always in view, `c` turns it at once and the focus stays where it was.
+#[test]
+fn c_on_another_tab_shows_the_curves_before_turning_them() {
+    let mut app = walked(Some(&config("default")), 30);
+    let before = screen(&app, 80, 24);
+    assert!(before.contains("Parameters") && !before.contains("pelvic obliquity"), "{before}");
+    // Every tab's title whole at 80 columns.
+    assert!(before.lines().next().is_some_and(|l| l.ends_with("Parameters | Curves | Joints | Optimiser")), "{before}");
+    let shown = app.curve;
+    key(&mut app, KeyCode::Char('c'));
+    let after = screen(&app, 80, 24);
+    assert_eq!(app.curve, shown, "the first c only shows the chart");
+    assert!(after.contains("curves (c/C: next/previous)"), "{after}");
+    key(&mut app, KeyCode::Char('c'));
+    assert_ne!(app.curve, shown, "the second c turns it");
+
+    let mut app = walked(Some(&config("default")), 30);
+    let _ = screen(&app, 160, 48);
+    let (shown, focus) = (app.curve, app.panel);
+    key(&mut app, KeyCode::Char('c'));
+    assert_ne!(app.curve, shown);
+    assert_eq!(app.panel, focus);
 }

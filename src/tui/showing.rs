@@ -10,6 +10,13 @@ impl App {
     pub(super) fn show(&mut self, action: Action) {
         match action {
             Action::ToggleView => self.view = if self.view == View::Side { View::Front } else { View::Side },
+            // On the small screen the chart shares a tab with the other panels: from another
+            // tab the first press shows it (else `c` on the Parameters tab would turn a chart
+            // no one sees), the next ones turn it.
+            Action::NextCurve | Action::PrevCurve if self.panel != Panel::Curves && self.tabbed() => {
+                self.panel = Panel::Curves;
+                self.message = Some("curves (c/C: next/previous)".into());
+            }
             Action::NextCurve | Action::PrevCurve => {
                 let n = CurveView::ALL.len();
                 self.curve = (self.curve + if action == Action::NextCurve { 1 } else { n - 1 }) % n;
@@ -23,6 +30,11 @@ impl App {
                 self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
             }
         }
+    }
+
+    /// Whether the last screen drawn put the panels behind tabs (the small screen).
+    fn tabbed(&self) -> bool {
+        !self.hits.borrow().tabs.is_empty()
     }
 
     /// One curve or a grid of them; on narrow screens the curves share a tab with the other

@@ -99,7 +99,10 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
             Tabs::new(Panel::ALL.map(Panel::title))
                 .select(selected)
                 .highlight_style(Style::new().reversed())
-                .divider("|"),
+                // No padding, the divider spaced: the four titles fit a 40-column half of an
+                // 80-column terminal whole (padded, "Optimiser" lost its last letter).
+                .padding("", "")
+                .divider(" | "),
             tabs,
         );
         record_tabs(app, tabs, panel);
@@ -154,9 +157,9 @@ fn record_tabs(app: &App, tabs: Rect, panel: Rect) {
     let mut hits = app.hits.borrow_mut();
     let mut x = tabs.x;
     for p in Panel::ALL {
-        let width = p.title().chars().count() as u16 + 2;
+        let width = p.title().chars().count() as u16;
         hits.tabs.push((Rect { x, y: tabs.y, width, height: 1 }.intersection(tabs), p));
-        x += width + 1;
+        x += width + 3;
     }
     hits.panels.push((panel, app.panel));
 }

@@ -66,8 +66,12 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
                 // The value is always shown: the name column gives way first, cut with `…`.
                 let value = app.value_text(spec);
                 let room = usize::from(end.saturating_sub(x)).saturating_sub(value_len(spec) + 1);
-                let column = column.min(room);
                 let name = spec.name();
+                // A name longer than the shared column but with room on its own row is shown
+                // whole, its value a little right of the others': `rotation_range_deg` at
+                // 80x24 read `rotation_range_d…` beside a short value.
+                let column =
+                    if name.len() + 1 > column && name.len() < room { name.len() + 1 } else { column.min(room) };
                 let shown = if name.len() <= column.saturating_sub(1) || column == 0 {
                     format!("{name:<column$}")
                 } else {
@@ -184,7 +188,7 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
         }
     };
     if table_area.height > 0 {
-        let header = ["step", "", "ratio", "cost", "fixed", "feas", "us"].map(String::from);
+        let header = ["step", "", "ratio", "cost", "fixed", "feas", "µs"].map(String::from);
         row_at(buf, table_area.y, &header, Style::new().bold());
     }
     for (line, y) in lines.iter().zip(table_area.y + 1..) {
