@@ -540,9 +540,9 @@ fn a_scheduled_walk_plots_its_pace_and_lists_its_events() {
 /// landscape, drawn on the landscape's axes rather than clipped onto the unreachable row.
 #[test]
 fn the_optimisation_plot_says_when_the_lines_coincide_and_when_the_choice_is_off_the_landscape() {
-    let words = |sets: &[&str], name: &str| {
+    let words = |config: &str, sets: &[&str], name: &str| {
         let dir = temp(name);
-        let mut args = vec!["report", "configs/default.toml", "--out", dir.to_str().unwrap(), "--cycles", "5"];
+        let mut args = vec!["report", config, "--out", dir.to_str().unwrap(), "--cycles", "5"];
         for s in sets {
             args.extend(["--set", s]);
         }
@@ -555,11 +555,13 @@ fn the_optimisation_plot_says_when_the_lines_coincide_and_when_the_choice_is_off
         words
     };
     // The shipped walk: the thesis search keeps the fixed rule on every costed step.
-    let thesis = words(&[], "opt_thesis");
+    let thesis = words("configs/default.toml", &[], "opt_thesis");
     assert!(thesis.iter().any(|w| w.starts_with("cost per step (fixed rule kept on all ")), "{thesis:?}");
     assert!(thesis.iter().any(|w| w == "chosen"), "{thesis:?}");
-    // The joint search lowers the double support below the landscape's height.
-    let joint = words(&["optimiser.method=joint"], "opt_joint");
+    // The joint search lowers the double support below the landscape's height: on stroll
+    // 3.0 cm (on the default since session 15's swing designs it stays at the landscape's
+    // height, 6.3 % under the fixed rule at the feasible band's edge).
+    let joint = words("configs/stroll.toml", &["optimiser.method=joint"], "opt_joint");
     assert!(joint.iter().any(|w| w == "cost per step"), "{joint:?}");
     let lower = joint.iter().find(|w| w.starts_with("chosen, ")).expect("the chosen point's label");
     let cm: f64 = lower.trim_start_matches("chosen, ").trim_end_matches(" cm lower").parse().unwrap();

@@ -238,8 +238,7 @@ impl Gait {
             }
             LegPhase::HeelRise => {
                 let s = ((q - leg.heel_rise) / (leg.toe_off - leg.heel_rise)).clamp(0.0, 1.0);
-                let curve_angle =
-                    (self.design.get(CurveName::HeelRise).eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
+                let curve_angle = (leg.heel_rise_curve.eval(s) * leg.heel_rise_scale).to_radians().max(0.0);
                 let ankle_at =
                     |angle: f64| leg.anchor - foot_rotation(ff.yaw, ff.ground_angle - angle) * dims.ball_local();
                 let limit = r.reach_margin * dims.leg_reach();
@@ -293,7 +292,7 @@ impl Gait {
             if phase < boundary {
                 return;
             }
-            enter_stance_phase(leg, &self.r);
+            enter_stance_phase(leg, &self.r, &self.design);
         }
     }
 }
@@ -325,8 +324,8 @@ pub fn place_footfall(terrain: &Terrain, r: &Resolved, step: i64, side: Side, no
 
 /// Moves a stance leg into its next stance phase: midstance holds the ankle of the foot laid
 /// flat about its heel; heel rise holds the toe joint of the flat foot and freezes the
-/// heel-rise curve's stride scale.
-pub fn enter_stance_phase(leg: &mut LegState, r: &Resolved) {
+/// heel-rise curve and its stride scale (the design at the walk's speed then).
+pub fn enter_stance_phase(leg: &mut LegState, r: &Resolved, design: &CurveSet) {
     match leg.phase {
         // The flat foot's ankle and ball, not the target's: a leg rolled to reach at the
         // boundary (`heel_rocker_to_reach`, the mid-stance heel rescue) keeps its contact point.
@@ -338,6 +337,7 @@ pub fn enter_stance_phase(leg: &mut LegState, r: &Resolved) {
         LegPhase::Midstance => {
             leg.anchor += foot_rotation(leg.footfall.yaw, leg.footfall.ground_angle) * r.dims.ball_local();
             leg.heel_rise_scale = r.stride_m / HEEL_RISE_DESIGN_STRIDE_M;
+            leg.heel_rise_curve.clone_from(design.get(CurveName::HeelRise));
             leg.toe_off = r.toe_off;
             leg.phase = LegPhase::HeelRise;
         }

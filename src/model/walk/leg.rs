@@ -180,6 +180,10 @@ pub struct LegState {
     pub(crate) strike_angle: f64,
     /// Heel-rise curve scale frozen at the phase's start: stride / 1.8 m.
     pub(crate) heel_rise_scale: f64,
+    /// The heel-rise curve, frozen at the phase's start: the design depends on the walk's
+    /// speed, and a pace change at a heel strike (the other leg always in its heel rise) took
+    /// a knee 7.4 -> 20.6 deg in a frame when the curve changed under it.
+    pub(crate) heel_rise_curve: Curve,
     /// Cycle phase of this leg's toe-off, frozen when its heel rise starts: its heel rise
     /// and swing are timed by it, so a pace change (which moves the toe-off with speed) never
     /// moves a heel rise or a swing under way.

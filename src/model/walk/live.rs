@@ -26,7 +26,8 @@ impl Walker {
             return Ok(false);
         }
         let r = params.resolve();
-        let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+        let design =
+            CurveSet::with_overrides(&params.curves, params.walk.speed_mps).map_err(|e| ModelError(e.to_string()))?;
         let p_right = phase.rem_euclid(1.0);
         let p_left = (phase - 0.5).rem_euclid(1.0);
         self.gait.live.change_to(cycle_targets(&design, &r), p_right, p_left);

@@ -140,7 +140,8 @@ pub struct Walker {
 /// what a walker starts from.
 pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
     let r = params.resolve();
-    let design = CurveSet::with_overrides(&params.curves).map_err(|e| ModelError(e.to_string()))?;
+    let design =
+        CurveSet::with_overrides(&params.curves, params.walk.speed_mps).map_err(|e| ModelError(e.to_string()))?;
     if r.toe_off.is_nan() || r.toe_off <= 0.5 {
         return Err(ModelError(format!(
             "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
@@ -424,9 +425,9 @@ impl Walker {
         let pose = self.legs[i].pose;
         let next = self.legs[i].phase.next();
         match next {
-            LegPhase::Midstance => enter_stance_phase(&mut self.legs[i], &self.gait.r),
+            LegPhase::Midstance => enter_stance_phase(&mut self.legs[i], &self.gait.r, &self.gait.design),
             LegPhase::HeelRise => {
-                enter_stance_phase(&mut self.legs[i], &self.gait.r);
+                enter_stance_phase(&mut self.legs[i], &self.gait.r, &self.gait.design);
                 self.legs[i].heel_rise_scale *= self.closing_heel_rise_share(&self.legs[i]);
             }
             LegPhase::Swing => {
