@@ -27,7 +27,7 @@ fn normative(c: &mut Criterion) {
     group.bench_function("compare_default_10_cycles", |b| {
         b.iter(|| normative::compare(&path, &params, reference).unwrap());
     });
-    group.bench_function("fit_default_200_walks", |b| {
+    group.bench_function("fit_default_600_walks", |b| {
         let options = gaitlab::fit::FitOptions::default();
         b.iter(|| gaitlab::fit::fit(&path, &params, reference, options).unwrap());
     });

@@ -26,7 +26,9 @@ fn json(out: &std::process::Output) -> serde_json::Value {
 /// double support at the legs' reach (the vertical range's fit range now from 0, its derived
 /// value): 6.88 / 10.21 / 14.28 to 2.52 / 4.58 / 1.93 (knee r 0.984, ankle r 0.965), cost
 /// 10.46 -> 3.01, inside the targets; with session 15's reach margin of 0.9996:
-/// 10.75 -> 2.84 (2.49 / 4.06 / 1.97) with 600 walks (200 stuck at foot flat 0.19: 3.98).
+/// 10.75 -> 2.84 (2.49 / 4.06 / 1.97) with 600 walks (200 stuck at foot flat 0.19: 3.98); with
+/// the swing and heel-rise curves drawn at three speeds: 10.55 -> 2.59 (1.73 / 3.84 / 2.21,
+/// knee r 0.988, ankle r 0.970).
 const BAD: [&str; 8] = [
     "--set",
     "pelvis.vertical_range_cm=0.6",
