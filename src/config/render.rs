@@ -101,7 +101,11 @@ pub fn render(params: &WalkParams, title: &str) -> String {
     out.push_str("# them, x from 0 to 1 and increasing; cycle curves must end where they start.\n# Curves: ");
     let names: Vec<&str> = CurveName::ALL.iter().map(|c| c.key()).collect();
     out.push_str(&names.join(", "));
-    out.push_str(".\n# Example, the default heel-rise curve (foot-ground angle in degrees for a 1.8 m stride):\n");
+    out.push_str(".\n# The defaults of heel_rise, swing_forward and swing_heel_height depend on the speed (drawn at\n");
+    out.push_str("# 0.8, 1.3 and 1.6 m/s and blended between); a [curves] entry holds at every speed.\n");
+    out.push_str(
+        "# Example, the default heel-rise curve at 1.3 m/s (foot-ground angle in degrees for a 1.8 m stride):\n",
+    );
     out.push_str("# [curves.heel_rise]\n# points = [");
     let pts: Vec<String> = CurveName::HeelRise
         .default_curve()
