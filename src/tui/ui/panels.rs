@@ -20,6 +20,9 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
         Span::raw("unsaved "),
         Span::styled("grey", Style::new().fg(Color::DarkGray)),
         Span::raw(" derived "),
+        // Where in the list the selection is: the list scrolls, and a newcomer saw no sign of
+        // the keys above and below the rows in view.
+        Span::styled(format!(" {}/{} ", app.selected + 1, PARAMS.len()), Style::new().fg(Color::DarkGray)),
     ]);
     let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(legend));
     let (doc, doc_lines) = selected_doc(app, inner);
@@ -86,6 +89,16 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
         }
         if k + first == selected_row {
             buf.set_style(Rect { x: list_area.x, y, width: list_area.width, height: 1 }, Style::new().reversed());
+        }
+    }
+    // More keys above or below the rows in view: an arrow at the list's right edge.
+    if list_area.width > 0 && list_area.height > 0 {
+        let x = list_area.x + list_area.width - 1;
+        if first > 0 {
+            put(buf, x, list_area.y, "▲", end, Style::new().fg(Color::Yellow));
+        }
+        if first + height < rows.len() {
+            put(buf, x, list_area.y + list_area.height - 1, "▼", end, Style::new().fg(Color::Yellow));
         }
     }
     f.render_widget(doc, doc_area);
@@ -250,7 +263,7 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
             .style(Style::new().fg(Color::LightRed))
             .data(&unreachable),
         Dataset::default()
-            .name("cost")
+            .name("cost rad²/s³")
             .marker(marker)
             .graph_type(GraphType::Line)
             .style(Style::new().fg(Color::Cyan))
