@@ -102,13 +102,15 @@ impl App {
     }
 
     /// Selects the next (`step` 1) or previous (-1) control point of the chart shown first,
-    /// wrapping; the first press selects the first point.
+    /// wrapping; the first `>` selects the first handle (a progress curve's start is pinned at
+    /// 0, and a newcomer's first arrow press on it was always refused), the first `<` the last
+    /// point (a cycle curve's ends move together).
     pub(super) fn select_point(&mut self, step: i64) {
         let view = self.point.map_or(CurveView::ALL[self.curve], |p| p.view);
         let n = self.design_points(self.edit_map(view).name).len() as i64;
         let index = match self.point {
             Some(p) => (p.index as i64 + step).rem_euclid(n) as usize,
-            None if step > 0 => 0,
+            None if step > 0 => 1.min(n - 1) as usize,
             None => (n - 1) as usize,
         };
         self.point = Some(PointSel { view, index });

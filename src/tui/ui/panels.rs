@@ -15,16 +15,7 @@ pub const NAME_COLUMN: usize = 26;
 /// The editor: every key by group, value, unit, a `*` on changed ones; the selected key's
 /// range and doc under the list.
 pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
-    let legend = Line::from(vec![
-        Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
-        Span::raw("unsaved "),
-        Span::styled("grey", Style::new().fg(Color::DarkGray)),
-        Span::raw(" derived "),
-        // Where in the list the selection is: the list scrolls, and a newcomer saw no sign of
-        // the keys above and below the rows in view.
-        Span::styled(format!(" {}/{} ", app.selected + 1, PARAMS.len()), Style::new().fg(Color::DarkGray)),
-    ]);
-    let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(legend));
+    let inner = super::panel(f, area, Line::raw(" Parameters (enter: type, x: default) "), Some(editor_legend(app)));
     let (doc, doc_lines) = selected_doc(app, inner);
     let [list_area, doc_area] = Layout::vertical([Constraint::Min(3), Constraint::Length(doc_lines)]).areas(inner);
     // Rows are group headers (None) or keys; only the rows that fit are built, in a window
@@ -91,17 +82,34 @@ pub fn draw_editor(f: &mut Frame, area: Rect, app: &App) {
             buf.set_style(Rect { x: list_area.x, y, width: list_area.width, height: 1 }, Style::new().reversed());
         }
     }
-    // More keys above or below the rows in view: an arrow at the list's right edge.
-    if list_area.width > 0 && list_area.height > 0 {
-        let x = list_area.x + list_area.width - 1;
-        if first > 0 {
-            put(buf, x, list_area.y, "▲", end, Style::new().fg(Color::Yellow));
-        }
-        if first + height < rows.len() {
-            put(buf, x, list_area.y + list_area.height - 1, "▼", end, Style::new().fg(Color::Yellow));
-        }
-    }
+    scroll_marks(buf, list_area, first > 0, first + height < rows.len());
     f.render_widget(doc, doc_area);
+}
+
+/// The editor's bottom line: what `*` and grey mean, and where in the list the selection is
+/// (the list scrolls, and a newcomer saw no sign of the keys above and below the rows in view).
+fn editor_legend(app: &App) -> Line<'static> {
+    Line::from(vec![
+        Span::styled(" * ", Style::new().fg(Color::LightRed).bold()),
+        Span::raw("unsaved "),
+        Span::styled("grey", Style::new().fg(Color::DarkGray)),
+        Span::raw(" derived "),
+        Span::styled(format!(" {}/{} ", app.selected + 1, PARAMS.len()), Style::new().fg(Color::DarkGray)),
+    ])
+}
+
+/// More rows above or below the ones in view: an arrow at the list's right edge.
+fn scroll_marks(buf: &mut Buffer, list: Rect, above: bool, below: bool) {
+    if list.width == 0 || list.height == 0 {
+        return;
+    }
+    let (x, end) = (list.x + list.width - 1, list.x + list.width);
+    if above {
+        put(buf, x, list.y, "▲", end, Style::new().fg(Color::Yellow));
+    }
+    if below {
+        put(buf, x, list.y + list.height - 1, "▼", end, Style::new().fg(Color::Yellow));
+    }
 }
 
 /// The selected key's range and description, whole: the paragraph and the lines it takes
