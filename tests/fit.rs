@@ -48,6 +48,10 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
     let (before, after) = (a["cost_before"].as_f64().unwrap(), a["cost_after"].as_f64().unwrap());
     // (The bad start costs 10.5, the shipped default 3.0.)
     assert!(before > 9.5 && after < 3.2, "{before} -> {after}");
+    // Every walk inside the budget, the start's and the written answer's included (it read
+    // "601 walks" for the default 600).
+    let walks = a["evaluations"].as_u64().unwrap();
+    assert!((590..=600).contains(&walks), "{walks} walks");
     for (curve, most, least_r) in [("hip_flex", 2.8, 0.98), ("knee_flex", 5.0, 0.975), ("ankle_dorsi", 2.3, 0.95)] {
         let k = a["curves_after"].as_array().unwrap().iter().find(|k| k["curve"] == curve).unwrap();
         assert!(k["rms_deg"].as_f64().unwrap() <= most, "{curve}: {k}");
