@@ -816,3 +816,17 @@ fn c_on_another_tab_shows_the_curves_before_turning_them() {
     assert_ne!(app.curve, shown);
     assert_eq!(app.panel, focus);
 }
+
+/// Shift+tab goes back a panel on the small screen (terminals send it as BackTab); it did
+/// nothing, so going back one tab took three presses of tab.
+#[test]
+fn shift_tab_goes_back_a_panel() {
+    let mut app = walked(Some(&config("default")), 10);
+    assert_eq!(app.panel, Panel::Editor);
+    press(&mut app, KeyEvent::new(KeyCode::BackTab, KeyModifiers::SHIFT));
+    assert_eq!(app.panel, Panel::Optimiser);
+    press(&mut app, KeyEvent::new(KeyCode::BackTab, KeyModifiers::NONE));
+    assert_eq!(app.panel, Panel::Joints);
+    key(&mut app, KeyCode::Tab);
+    assert_eq!(app.panel, Panel::Optimiser);
+}

@@ -406,7 +406,8 @@ impl App {
             | Action::PrevCurve
             | Action::ToggleGrid
             | Action::ToggleNorms
-            | Action::NextPanel => self.show(action),
+            | Action::NextPanel
+            | Action::PrevPanel => self.show(action),
             // Handled by `point_action` and `pace_action` above.
             Action::NextPoint | Action::PrevPoint | Action::LeavePoints => {}
             Action::PaceDown | Action::PaceUp | Action::StopWalk => {}

@@ -67,6 +67,8 @@ pub enum Action {
     ToggleNorms,
     /// Next panel (narrow screens).
     NextPanel,
+    /// Previous panel (narrow screens).
+    PrevPanel,
     /// Re-run the optimiser on the last step.
     RerunOptimiser,
     /// Next optimiser method.
@@ -130,6 +132,7 @@ pub(crate) const DEFAULT_KEYS: &[(&str, Action)] = &[
     ("g", Action::ToggleGrid),
     ("n", Action::ToggleNorms),
     ("tab", Action::NextPanel),
+    ("shift+tab", Action::PrevPanel),
     ("o", Action::RerunOptimiser),
     ("m", Action::NextMethod),
     ("i", Action::NextSolver),
@@ -162,7 +165,7 @@ pub const HELP: &[(&[Action], &str)] = &[
     (&[Action::NextCurve, Action::PrevCurve], "next / previous curve"),
     // One line for both keeps the whole help on an 80x24 screen without scrolling.
     (&[Action::ToggleGrid, Action::ToggleNorms], "curve grid / adult norms band on the joints"),
-    (&[Action::NextPanel], "next panel (small screens)"),
+    (&[Action::NextPanel, Action::PrevPanel], "next / previous panel (small screens)"),
     (&[Action::RerunOptimiser, Action::NextMethod], "re-run the optimiser / next method"),
     (&[Action::NextSolver, Action::Export], "next leg IK solver (live) / export a report"),
     (&[Action::PaceDown, Action::PaceUp, Action::StopWalk], "slower / faster (0.1 m/s) / stop, start"),
@@ -251,10 +254,14 @@ impl KeySpec {
 
     fn matches(self, key: KeyEvent) -> bool {
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        // Terminals send shift+tab as its own key, BackTab (with or without SHIFT).
+        let (code, shift) = match key.code {
+            KeyCode::BackTab => (KeyCode::Tab, true),
+            code => (code, key.modifiers.contains(KeyModifiers::SHIFT)),
+        };
         // A character carries its shift in its case: `H` arrives as Char('H') with SHIFT.
         let shift_ok = matches!(self.code, KeyCode::Char(_)) || shift == self.shift;
-        self.code == key.code && ctrl == self.ctrl && shift_ok
+        self.code == code && ctrl == self.ctrl && shift_ok
     }
 }
 
@@ -352,7 +359,7 @@ mod tests {
         // The README's `[keys]` action list: the names users' configs are written in.
         let documented = "quit help pause step slower faster restart up down group_up group_down decrease increase \
             decrease_coarse increase_coarse edit reset undo redo save save_as presets terrain toggle_view next_curve \
-            prev_curve toggle_grid toggle_norms next_panel rerun_optimiser next_method next_ik_solver export next_point \
+            prev_curve toggle_grid toggle_norms next_panel prev_panel rerun_optimiser next_method next_ik_solver export next_point \
             prev_point leave_points pace_down pace_up stop_walk";
         let names: Vec<&str> = Action::ALL.iter().map(|a| a.name()).collect();
         assert_eq!(names, documented.split_whitespace().collect::<Vec<_>>());

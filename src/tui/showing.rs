@@ -26,8 +26,9 @@ impl App {
             Action::ToggleGrid => self.toggle_grid(),
             Action::ToggleNorms => self.toggle_norms(),
             _ => {
-                let i = Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0);
-                self.panel = Panel::ALL[(i + 1) % Panel::ALL.len()];
+                let (i, n) = (Panel::ALL.iter().position(|p| *p == self.panel).unwrap_or(0), Panel::ALL.len());
+                let step = if action == Action::PrevPanel { n - 1 } else { 1 };
+                self.panel = Panel::ALL[(i + step) % n];
             }
         }
     }
