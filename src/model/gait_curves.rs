@@ -194,12 +194,13 @@ impl CurveName {
 /// change to 1.23x the steady walks' (the issue-14 bound is 1.2x): one design.
 const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
 
-/// Thesis fig 6.10's shape, its values the normative walk's heel (data/normative/ through this
-/// leg chain): 20 cm up at toe-off, its peak of 26 cm at 0.16 of the swing, down to 2 cm by
-/// three quarters and skimming the ground onto the footfall. The key at 0.88 lies on that
-/// curve (its value and slope there): the swing simulation lifts a heel by moving the knots
-/// around the sample that asks, and with the last knots at 0.75 and 1.0 a toe clearance asked
-/// at 0.6-0.75 held the heel up to the footfall and the knee bent into heel strike. With it,
+/// Thesis fig 6.10's shape, first drawn from the normative walk's heel (data/normative/
+/// through this leg chain): 20 cm up at toe-off, its peak of 26 cm at 0.16 of the swing, down
+/// to 2 cm by three quarters and skimming the ground onto the footfall. The key at 0.88 was
+/// placed on that curve (its value and slope there) because the swing simulation lifts a
+/// heel by moving the knots around the sample that asks, and with the last knots at 0.75 and
+/// 1.0 a toe clearance asked at 0.6-0.75 held the heel up to the footfall and the knee bent
+/// into heel strike. With it,
 /// knee RMS against the norms 9.07 / 7.50 / 7.82 / 10.16 -> 8.88 / 7.15 / 7.57 / 10.01 deg at
 /// 0.8 / 1.0 / 1.3 / 1.6 m/s (docs/gait-model.md §12 has the denser variants that broke a stop
 /// on slope_up). Fitted at each of [`DESIGN_SPEEDS_MPS`] (see [`SWING_FORWARD_KEYS`]): the
