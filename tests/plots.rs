@@ -3,8 +3,15 @@
 use std::path::Path;
 
 fn report(dir: &Path) {
+    report_of(dir, &["configs/default.toml", "--cycles", "4"]);
+}
+
+/// `gaitlab report ARGS --out DIR`, which must succeed.
+fn report_of(dir: &Path, args: &[&str]) {
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .args(["report", "configs/default.toml", "--cycles", "4", "--out", dir.to_str().unwrap()])
+        .arg("report")
+        .args(args)
+        .args(["--out", dir.to_str().unwrap()])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .unwrap();
@@ -125,12 +132,7 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
     std::fs::remove_dir_all(&dir).unwrap();
     // Over the default 10 cycles the left leg lies under the right (within 0.1-0.4 deg): each
     // chart's legend says so and by how much, so the left curve does not look missing.
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .args(["report", "configs/default.toml", "--out", dir.to_str().unwrap()])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    report_of(&dir, &["configs/default.toml"]);
     let svg = std::fs::read_to_string(dir.join("plots/joints.svg")).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let under: Vec<f64> = doc
@@ -266,12 +268,7 @@ fn the_stick_figures_stand_apart_each_on_its_ground_with_its_events() {
     let dir = std::env::temp_dir().join(format!("gaitlab-plots-chrono-{}", std::process::id()));
     for config in ["configs/default.toml", "configs/stairs_up.toml"] {
         let _ = std::fs::remove_dir_all(&dir);
-        let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-            .args(["report", config, "--out", dir.to_str().unwrap()])
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        report_of(&dir, &[config]);
         let svg = std::fs::read_to_string(dir.join("plots/stick_figure.svg")).unwrap();
         for (view, top, bottom) in [("side", 0.0, 500.0), ("frontal", 500.0, 1000.0)] {
             let at = format!("{config} {view}");
@@ -313,12 +310,7 @@ fn the_stick_figures_stand_apart_each_on_its_ground_with_its_events() {
 fn the_cost_per_step_line_breaks_where_no_step_was_costed() {
     let dir = std::env::temp_dir().join(format!("gaitlab-plots-costline-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .args(["report", "configs/start_stop.toml", "--out", dir.to_str().unwrap()])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    report_of(&dir, &["configs/start_stop.toml"]);
     let svg = std::fs::read_to_string(dir.join("plots/optimisation.svg")).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
     // The optimised cost's lines (the legend's sample is a two-point line).

@@ -215,7 +215,8 @@ impl Walker {
     /// rotation and obliquity move its hip by millimetres, and the walk kept only 0.1 % of
     /// reach in hand: a slowdown from 2.0 to 0.5 m/s left that leg out of reach at the end of
     /// its mid-stance (1-2 mm of slide). With 0.04 % in hand since session 15, what is still
-    /// past reach (0.09-0.15 deg of heel) is taken by the heel's roll in `Gait::target_of`. Only keys not yet playing at `playing_at` move.
+    /// past reach (up to 0.30 deg of heel, 2.0 -> 0.5 m/s) is taken by the foot's roll in
+    /// `Gait::target_of`. Only keys not yet playing at `playing_at` move.
     pub(super) fn reguard_after_pace_change(&mut self, playing_at: f64) {
         let Some(strike) = self.pace.reguard_landing.take() else { return };
         let landed =
