@@ -181,6 +181,12 @@ fn optimiser_panel_shows_each_step_and_the_landscape() {
     assert_eq!(step, app.walker.step_plans().last().unwrap().step);
     let text = screen(&app, 80, 24);
     assert!(text.contains("Optimiser: thesis") && text.contains(&format!("step {step}")));
+    // At 80 columns the title keeps both keys whole (it lost "method)" to the border), and
+    // the landscape's marks are named under it (ratatui's legend box hid itself there).
+    assert!(text.contains("Optimiser: thesis (o run, m method)"), "{text}");
+    assert!(text.contains("• unreachable █ chosen ─ cost rad²/s³"), "{text}");
+    let wide = screen(&app, 160, 48);
+    assert!(wide.contains("Optimiser: thesis (o: re-run, m: method)"), "{wide}");
     insta::assert_snapshot!(text);
     // m: next method, applied as an edit and re-run on the last step at once.
     key(&mut app, KeyCode::Char('m'));

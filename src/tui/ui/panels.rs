@@ -155,11 +155,38 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     // The landscape's x-axis name in the bottom border: ratatui draws an axis title on the
     // chart's lowest data row, where it hid the cheapest candidates.
     let axis = app.landscape.as_ref().map(|(step, _)| Line::raw(format!(" x: step {step}'s pelvis x in range (m) ")));
-    let inner = super::panel(f, area, Line::raw(format!(" Optimiser: {method} (o: re-run, m: method) ")), axis);
-    let [table_area, chart_area] =
-        Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(inner);
+    let inner = super::panel(f, area, Line::raw(optimiser_title(method, area.width)), axis);
+    let [table_area, chart_area, key_area] =
+        Layout::vertical([Constraint::Percentage(45), Constraint::Fill(1), Constraint::Length(1)]).areas(inner);
     draw_step_table(f, table_area, app);
     draw_landscape(f, chart_area, app, marker);
+    f.render_widget(Paragraph::new(landscape_key()), key_area);
+}
+
+/// The optimiser panel's title for a panel `width` columns wide: the keys said in words, in
+/// fewer words where the panel is narrow (at 80 columns the full title lost "method)").
+fn optimiser_title(method: &str, width: u16) -> String {
+    let full = format!(" Optimiser: {method} (o: re-run, m: method) ");
+    // The border's corners take two columns.
+    if full.chars().count() + 2 <= usize::from(width) {
+        full
+    } else {
+        format!(" Optimiser: {method} (o run, m method) ")
+    }
+}
+
+/// What the landscape's marks are, one line under it. ratatui's own legend box hides itself
+/// where it would take more than a third of the chart — at 80 columns always — and at 160x48
+/// it covered the cheapest candidates; the line is always there and covers nothing.
+fn landscape_key() -> Line<'static> {
+    Line::from(vec![
+        Span::styled("•", Style::new().fg(Color::LightRed)),
+        Span::raw(" unreachable "),
+        Span::styled("█", Style::new().fg(Color::Yellow)),
+        Span::raw(" chosen "),
+        Span::styled("─", Style::new().fg(Color::Cyan)),
+        Span::raw(" cost rad²/s³"),
+    ])
 }
 
 /// A line of the optimiser's table under its header.
@@ -285,7 +312,7 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
     ])
     .x_axis(Axis::default().bounds([0.0, span]).labels(["0".to_string(), format!("{span:.2}")]))
     .y_axis(Axis::default().bounds(y).labels([format!("{:.0}", y[0]), format!("{:.0}", y[1])]))
-    .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
+    .legend_position(None);
     f.render_widget(chart, chart_area);
 }
 
