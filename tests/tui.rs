@@ -166,6 +166,9 @@ fn stairs_walk_mid_swing_with_the_adapted_heel_curve() {
     assert!(data.cursor.is_some());
     let text = screen(&app, 100, 30);
     assert!(text.contains("swing heel height (cm)") && text.contains("this step") && text.contains("R swing"));
+    // The lines are named in the bottom border, in their colours, not in a box over the
+    // curve's end (ratatui's legend covered the landing at 160x48).
+    assert!(text.contains("x: swing (0-1) ─ this step ─ design • points"), "{text}");
     insta::assert_snapshot!(text);
 }
 

@@ -204,17 +204,36 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
     }
     // The x axis's name in the bottom border: ratatui draws an axis title on the chart's
     // lowest data row, where it hid the curve's minimum (the pelvic rotation at mid-cycle).
-    let inner = super::panel(f, area, coloured_title(&data), Some(Line::raw(format!(" x: {} ", data.x_label))));
+    let inner = super::panel(f, area, coloured_title(&data), Some(bottom_border(&data, area.width.saturating_sub(2))));
     let (x_labels, y_labels) = ([label(x[0]), label(x[1])], [label(y[0]), label(y[1])]);
     let graph = graph_area(inner, &x_labels, &y_labels);
     app.hits.borrow_mut().charts.push(ChartHit { view, graph, x, y });
     let chart = Chart::new(datasets)
         .x_axis(Axis::default().bounds(x).labels(x_labels))
         .y_axis(Axis::default().bounds(y).labels(y_labels))
-        .legend_position(Some(ratatui::widgets::LegendPosition::TopRight))
-        // The legend only where it covers little of the chart: in small charts it hid the data.
-        .hidden_legend_constraints((Constraint::Percentage(30), Constraint::Percentage(30)));
+        // The lines are named in the bottom border (see `bottom_border`): ratatui's legend
+        // box hid itself in small charts and at 160x48 covered the curve's end.
+        .legend_position(None);
     f.render_widget(chart, inner);
+}
+
+/// The chart's bottom border: the x axis's name, then each line's name in its colour and the
+/// control points' mark, where the border has room for them all (`width` columns).
+fn bottom_border(data: &CurveData, width: u16) -> Line<'static> {
+    let axis = format!(" x: {} ", data.x_label);
+    let mut names: Vec<Span<'static>> = Vec::new();
+    for (name, colour, _) in &data.lines {
+        names.push(Span::styled(format!("─ {name}"), Style::new().fg(*colour)));
+        names.push(Span::raw(" "));
+    }
+    names.push(Span::styled("• points", Style::new().fg(Color::Yellow)));
+    names.push(Span::raw(" "));
+    let names_width: usize = names.iter().map(Span::width).sum();
+    let mut spans = vec![Span::raw(axis)];
+    if spans[0].width() + names_width <= usize::from(width) {
+        spans.extend(names);
+    }
+    Line::from(spans)
 }
 
 /// The chart's title, its segment names ("ds>ms", "ms>ds") drawn in their lines' colours:
