@@ -420,6 +420,29 @@ fn curve_overrides_stay_within_their_limits() {
         error_of("", &[&set("pelvis_tilt", "[[0, 0], [0.3, 1e308], [0.6, 0], [1, 0]]")]),
         "--set #1:1:27: curves.pelvis_tilt.points: curve `pelvis_tilt`: control point 1 has y = 1e308; valid: -1 to 1 (a unit shape, -1 to 1)"
     );
+    // A forward progress that dips: the swing heel would walk backward in mid-swing (it was
+    // accepted, and walked). Where it falls, and to what, is named.
+    assert_eq!(
+        error_of(
+            "",
+            &[&set("swing_forward", "[[0, 0], [0.2, 0.5], [0.3, 0.9], [0.5, 0.6], [0.7, 0.3], [0.8, 0.9], [1, 1]]")]
+        ),
+        "--set #1:1:29: curves.swing_forward.points: curve `swing_forward` must never go back (progress from toe-off to the footfall, 0 to 1): it falls from 0.703 at x = 0.37 to 0.517 at x = 0.608"
+    );
+    let in_file = "[curves.pelvis_forward_ds_ms]\npoints = [[0, 0], [0.1, 0.6], [0.3, 0.1], [0.5, 0.5], [0.6, 0.6], [0.8, 0.8], [1, 1]]\n";
+    let error = error_of(in_file, &[]);
+    assert!(
+        error.starts_with("a.toml:2:")
+            && error.contains("curves.pelvis_forward_ds_ms.points: curve `pelvis_forward_ds_ms` must never go back"),
+        "{error}"
+    );
+    // A progress that pauses (flat) is not going back.
+    config::load_text(
+        "",
+        "a.toml",
+        &[set("swing_forward", "[[0, 0], [0.2, 0.5], [0.3, 0.5], [0.5, 0.5], [0.7, 0.5], [0.8, 1], [1, 1]]")],
+    )
+    .unwrap();
     // At the limits, accepted.
     let p = config::load_text("", "a.toml", &[set("swing_lateral", "[[0, 0], [0.2, 1], [0.8, 1], [1, 0]]")]).unwrap();
     assert_eq!(p.curves["swing_lateral"], vec![(0.0, 0.0), (0.2, 1.0), (0.8, 1.0), (1.0, 0.0)]);

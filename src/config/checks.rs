@@ -51,6 +51,32 @@ pub fn check_curve(name: &str, pairs: &[(f64, f64)]) -> Result<(), String> {
             limits.meaning
         ));
     }
+    if kind.is_forward_progress() {
+        // Sampled finely enough that a dip between two control points shows: a Bézier
+        // segment turns at most twice, and 400 samples over [0, 1] see a back-step of a
+        // curve's width of 0.0025.
+        let samples: Vec<(f64, f64)> = (0..=400).map(|i| f64::from(i) / 400.0).map(|x| (x, curve.eval(x))).collect();
+        if let Some(w) = samples.windows(2).find(|w| w[1].1 < w[0].1 - 1e-9) {
+            let (top_x, top) = samples
+                .iter()
+                .take_while(|s| s.0 <= w[0].0)
+                .fold((0.0, f64::NEG_INFINITY), |a, s| if s.1 > a.1 { *s } else { a });
+            let (low_x, low) = samples.iter().skip_while(|s| s.0 < w[1].0).take_while(|s| s.1 <= top).fold(
+                (w[1].0, w[1].1),
+                |a, s| {
+                    if s.1 < a.1 { *s } else { a }
+                },
+            );
+            return Err(format!(
+                "curve `{name}` must never go back ({}): it falls from {} at x = {} to {} at x = {}",
+                limits.meaning,
+                n((top * 1000.0).round() / 1000.0),
+                n((top_x * 1000.0).round() / 1000.0),
+                n((low * 1000.0).round() / 1000.0),
+                n((low_x * 1000.0).round() / 1000.0)
+            ));
+        }
+    }
     if kind.is_cyclic() && (curve.eval(0.0) - curve.eval(1.0)).abs() > 1e-9 {
         return Err(format!(
             "curve `{name}` repeats every gait cycle, so its ends must meet: y(0) = {} but y(1) = {}",

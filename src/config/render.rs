@@ -98,7 +98,9 @@ pub fn render(params: &WalkParams, title: &str) -> String {
         }
     }
     out.push_str("\n# [curves.<name>] replaces a curve's control points: points = [[x, y], ...], 3n+1 of\n");
-    out.push_str("# them, x from 0 to 1 and increasing; cycle curves must end where they start.\n# Curves: ");
+    out.push_str("# them, x from 0 to 1 and increasing; cycle curves must end where they start, and the\n");
+    out.push_str("# forward progress curves (pelvis_forward_ds_ms, pelvis_forward_ms_ds, swing_forward) never\n");
+    out.push_str("# go back.\n# Curves: ");
     let names: Vec<&str> = CurveName::ALL.iter().map(|c| c.key()).collect();
     out.push_str(&names.join(", "));
     out.push_str(".\n# The defaults of heel_rise, swing_forward and swing_heel_height depend on the speed (drawn at\n");

@@ -95,6 +95,14 @@ impl CurveName {
         CurveName::ALL.into_iter().find(|c| c.key() == key)
     }
 
+    /// Whether the curve is a forward progress that may never go back: the pelvis and the
+    /// swing heel move toward their next key or footfall, never away from it (a user's curve
+    /// that dipped walked the heel backward in mid-swing, and `check` passed it).
+    #[must_use]
+    pub fn is_forward_progress(self) -> bool {
+        matches!(self, CurveName::SwingForward | CurveName::PelvisForwardDsMs | CurveName::PelvisForwardMsDs)
+    }
+
     /// Whether the curve repeats over the gait cycle (its ends must meet).
     #[must_use]
     pub fn is_cyclic(self) -> bool {
