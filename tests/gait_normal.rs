@@ -191,12 +191,19 @@ fn stairs_are_cleared_and_treads_met_flat() {
 
 #[test]
 fn slopes_keep_feet_on_and_above_the_ground() {
-    for name in ["slope_up", "slope_down"] {
+    // A stance foot lies on the ground along its own direction: pitched at the slope along
+    // x, a foot turned out 7 deg put its toe tip 0.197 mm under slope_down's 10 % grade all
+    // through every stance (rough: 0.122 mm). Now 1e-12 mm (rough: 4e-6 mm, its bumps'
+    // curvature under a straight foot).
+    for name in ["slope_up", "slope_down", "rough"] {
         let run = analysis::run(&preset(name), 12.0, 60.0).unwrap();
         let checks = analysis::checks(&run.frames);
-        assert!(checks.terrain_penetration_mm < 1.0, "{name}: {checks:?}");
+        assert!(checks.terrain_penetration_mm < 0.001, "{name}: {checks:?}");
         assert!(checks.foot_skate_mm < 0.5, "{name}: {checks:?}");
         assert_eq!(checks.reach_failures, 0, "{name}");
+        if name == "rough" {
+            continue;
+        }
         let end = run.frames.last().unwrap();
         let climbed = end.legs[0].ground_under_heel;
         assert!(climbed.abs() > 0.5, "{name}: walked onto the slope ({climbed:.2} m)");
