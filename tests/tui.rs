@@ -90,6 +90,12 @@ fn default_screen_at_160x48_shows_every_panel() {
     {
         assert!(text.contains(part), "{part} missing:\n{text}");
     }
+    // The joint traces' time span is in their title, as the walk's clock reads it (150
+    // frames at 60 fps walked: the traces end at 2.5 s).
+    let span = text.split("Joint angles (deg), ").nth(1).and_then(|t| t.split(" s ").next()).expect("a time span");
+    let (t0, t1) = span.split_once(" to ").expect("from and to");
+    let (t0, t1): (f64, f64) = (t0.parse().unwrap(), t1.parse().unwrap());
+    assert!((t1 - 2.5).abs() < 0.06 && t0 >= 0.0 && t0 < t1, "{span}");
     insta::assert_snapshot!(text);
 }
 

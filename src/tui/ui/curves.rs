@@ -333,6 +333,19 @@ fn at_phase(mean: &[f64], sd: &[f64], phase: f64) -> (f64, f64) {
     (mean[i] + (mean[i + 1] - mean[i]) * s, sd[i] + (sd[i + 1] - sd[i]) * s)
 }
 
+/// The joint panel's title for a panel `width` columns wide: the time the traces span, as
+/// the walk's clock reads it (the traces had no time axis: "over time (s)" said the unit
+/// of a scale nowhere drawn).
+fn joints_title(traced: bool, [t0, t1]: [f64; 2], width: u16) -> String {
+    if !traced {
+        return " Joint angles (deg) ".into();
+    }
+    [format!(" Joint angles (deg), {t0:.1} to {t1:.1} s "), format!(" Joint angles (deg), {t0:.0}-{t1:.0} s ")]
+        .into_iter()
+        .find(|t| t.chars().count() + 2 <= usize::from(width))
+        .unwrap_or_else(|| " Joint angles (deg) ".into())
+}
+
 /// What the band is, said beside the hip trace's name as fully as the row allows: the
 /// right leg's cycle, the norms at `norms_mps`, and whether the walk (at `walk_mps`) is
 /// beyond the norms' fastest or slowest block, which the band then stays at.
@@ -356,15 +369,15 @@ fn band_note(norms_mps: f64, walk_mps: f64, room: usize) -> Option<String> {
 /// measured adults' mean ± 1 SD behind them, following the right leg's cycle.
 pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let reference = app.norms_band();
-    let title = Line::raw(" Joint angles (deg) over time (s) ");
+    let t0 = app.traces.front().map_or(0.0, |t| t.0);
+    let t1 = app.traces.back().map_or(1.0, |t| t.0).max(t0 + 1e-3);
+    let title = Line::raw(joints_title(app.traces.len() >= 2, [t0, t1], area.width));
     let legend = joints_legend(app, reference.is_some(), area.width.saturating_sub(2));
     let inner = super::panel(f, area, title, Some(legend));
     if app.traces.len() < 2 || inner.height < 3 {
         f.render_widget(Paragraph::new("collecting…"), inner);
         return;
     }
-    let t0 = app.traces.front().map_or(0.0, |t| t.0);
-    let t1 = app.traces.back().map_or(1.0, |t| t.0).max(t0 + 1e-3);
     let rows = Layout::vertical([Constraint::Fill(1); 3]).split(inner);
     // One point a cell column (lines join them): more would only cost drawing time.
     let stride = (app.traces.len() / usize::from(inner.width).max(1)).max(1);
