@@ -220,7 +220,7 @@ pub(super) fn ankle(own: &Recording) -> Result<Made, String> {
     let lower = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m - s));
     let upper: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m + s)).collect();
     let band = Band {
-        name: format!("adults at {:.2} m/s, Fukuchi 2018 (mean +-1 SD)", reference.speed_mps),
+        name: format!("adults at {:.2} m/s, Fukuchi 2018 (mean ±1 SD)", reference.speed_mps),
         polygon: lower.chain(upper.into_iter().rev()).collect(),
     };
     let rights: Vec<_> = own.step_plans.iter().filter(|p| p.side == Side::Right).collect();
@@ -258,7 +258,7 @@ pub(super) fn ankle(own: &Recording) -> Result<Made, String> {
         );
     }
     let note = format!(
-        "Thesis fig. 6.8: the walk's ankle dorsiflexion over the right gait cycle (mean of the steady cycles) over measured adults' mean +-1 SD; the swing (from toe-off at {to:.0} %) shaded, with its Bezier curve as designed and as one step planned it (started at that step's toe-off angle)."
+        "Thesis fig. 6.8: the walk's ankle dorsiflexion over the right gait cycle (mean of the steady cycles) over measured adults' mean ±1 SD; the swing (from toe-off at {to:.0} %) shaded, with its Bezier curve as designed and as one step planned it (started at that step's toe-off angle)."
     );
     Ok(Made { figure, csv, note })
 }

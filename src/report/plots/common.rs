@@ -2,12 +2,29 @@
 //! that fits a set of series.
 
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Pixel size of every PNG (and the SVG's nominal size).
 pub const SIZE: (u32, u32) = (1600, 1000);
 
 /// The embedded font's family name (registered by [`super::write_plots`]).
 pub(super) const FONT: &str = "sans-serif";
+
+/// `area` with `title` drawn across its top in `size` px, and the rest of the area. plotters'
+/// own `titled` hangs the text from the area's top pixel row by the font's estimated ascent,
+/// which is short: every title lost its ascenders (the dots of its i's, the tops of l, t, J).
+/// Centred in a band half as tall again as the text, the ink stays inside.
+pub(super) fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    title: &str,
+    size: u32,
+) -> Result<DrawingArea<DB, plotters::coord::Shift>, String> {
+    let (band, rest) = area.split_vertically(size * 3 / 2 + 6);
+    let (width, height) = band.dim_in_pixel();
+    let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
+    band.draw_text(title, &style, (width as i32 / 2, height as i32 / 2)).map_err(err)?;
+    Ok(rest)
+}
 
 /// What drawing a plot returns: the error as text.
 pub(super) type Res = Result<(), String>;

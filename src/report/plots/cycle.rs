@@ -2,7 +2,7 @@
 //! joint angles, with compared walks overlaid and measured adults' mean ± 1 SD behind them.
 
 use super::common::{
-    FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_height_px, percent_chart, y_range,
+    FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_height_px, percent_chart, titled, y_range,
 };
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
@@ -110,9 +110,7 @@ fn pelvis_cycles(d: &Data<'_>) -> Vec<Cycle> {
 /// over measured adults' mean +- 1 SD (the report's own walk's mean for the tilt).
 pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root
-        .titled("Pelvis over the right gait cycle (mean and min-max band; grey: measured adults)", (FONT, 34))
-        .map_err(err)?;
+    let root = titled(&root, "Pelvis over the right gait cycle (mean and min-max band; grey: measured adults)", 34)?;
     let areas = root.split_evenly((2, 3));
     let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
     let reference = speed_matched(&walks[0].1);
@@ -158,7 +156,7 @@ const NORM: RGBColor = RGBColor(120, 120, 120);
 /// is the reference's shape, not its level.
 fn norm_name(reference: &Reference, tilt: bool) -> String {
     let shape = if tilt { "\nshape about the walk's mean" } else { "" };
-    format!("adults at {:.2} m/s, Fukuchi 2018 (+-1 SD){shape}", reference.speed_mps)
+    format!("adults at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}", reference.speed_mps)
 }
 
 /// The built-in references at the speed `walk` walked its drawn cycles at, as the summary's
@@ -195,7 +193,7 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     } else {
         "Joint angles of the right leg, each walk over its own cycle (min-max band; grey: measured adults)"
     };
-    let root = root.titled(title, (FONT, 34)).map_err(err)?;
+    let root = titled(&root, title, 34)?;
     let areas = root.split_evenly((1, 3));
     type Pick = fn(&LegFrame) -> f64;
     let joints: [(&str, &str, &str, Pick); 3] = [

@@ -1,6 +1,6 @@
 //! The IK plot: each solver's ankle error and iterations on the walk's own targets.
 
-use super::common::{FONT, PALETTE, Res, SIZE, draw_legend, err};
+use super::common::{FONT, PALETTE, Res, SIZE, draw_legend, err, titled};
 use crate::analysis::ik::{IkSample, IkTarget, SolverRun};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -21,7 +21,7 @@ fn per_frame(targets: &[IkTarget], run: &SolverRun, value: impl Fn(&IkSample) ->
 /// Each solver's error (top) and iterations (bottom, log scale) per frame.
 pub(super) fn ik<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, targets: &[IkTarget], runs: &[SolverRun]) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled("Leg IK on the walk's targets (worse leg per frame)", (FONT, 34)).map_err(err)?;
+    let root = titled(&root, "Leg IK on the walk's targets (worse leg per frame)", 34)?;
     let (top, bottom) = root.split_vertically((SIZE.1 - 50) / 2);
     let t_end = targets.last().map_or(1.0, |t| t.time_s).max(1e-3);
     let errors: Vec<Vec<(f64, f64)>> =

@@ -1,7 +1,7 @@
 //! The pelvis-acceleration optimisation: one step's cost landscape, and every step's chosen
 //! position and cost against the fixed rule's.
 
-use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, draw_legend, err, y_range};
+use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, draw_legend, err, titled, y_range};
 use super::data::Data;
 use crate::model::optimise::{Candidate, StepProblem};
 use crate::model::walk::{Gait, StepPlan};
@@ -12,7 +12,7 @@ use plotters::prelude::*;
 /// and the cost per step (bottom right).
 pub(super) fn optimisation<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled("Pelvis-acceleration optimisation", (FONT, 34)).map_err(err)?;
+    let root = titled(&root, "Pelvis-acceleration optimisation", 34)?;
     let (left, right) = root.split_horizontally(SIZE.0 / 2);
     let plans = &d.run.step_plans;
     // A representative step: the middle one; its landscape by re-walking to it.

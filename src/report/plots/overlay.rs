@@ -2,7 +2,7 @@
 //! --plot`): each curve in its panel, the stored one dark, this walk's red, and the figures
 //! that moved listed beside the panels.
 
-use super::common::{DESIGN, FONT, RIGHT, Res, draw_legend, err, y_range};
+use super::common::{DESIGN, FONT, RIGHT, Res, draw_legend, err, titled, y_range};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -60,7 +60,7 @@ pub(super) fn overlay<DB: DrawingBackend>(
     notes: &[String],
 ) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled(title, (FONT, 30)).map_err(err)?;
+    let root = titled(&root, title, 30)?;
     let (width, height) = root.dim_in_pixel();
     let (grid, side) = root.split_horizontally(width * 7 / 10);
     let rows = curves.len().div_ceil(3).max(1);

@@ -4,7 +4,7 @@
 //! same metres per pixel on either axis so that the figures keep their proportions.
 
 use super::chrono::{self, FIGURES, Figure, HEAD_M, Part, Row, View};
-use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, err};
+use super::common::{DESIGN, FONT, LEFT, RIGHT, Res, SIZE, err, titled};
 use super::data::Data;
 use crate::model::body::Side;
 use plotters::coord::Shift;
@@ -34,8 +34,7 @@ pub(super) fn stick_figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: 
         format!("Side view: one gait cycle in {FIGURES} figures (right limbs red, left blue)"),
         "Frontal view, seen from in front (the right side on the page's left)".to_string(),
     ];
-    let panels =
-        [top.titled(&captions[0], (FONT, 26)).map_err(err)?, bottom.titled(&captions[1], (FONT, 26)).map_err(err)?];
+    let panels = [titled(&top, &captions[0], 26)?, titled(&bottom, &captions[1], 26)?];
     let views = [View::Side, View::Front];
     let mut rows = views.map(|v| chrono::row(d, &instants, v));
     let lines = 1 + instants.iter().map(|i| i.events.len()).max().unwrap_or(0);

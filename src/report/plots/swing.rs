@@ -2,7 +2,7 @@
 //! curve as the planner adapted it to the terrain.
 
 use super::common::{
-    DESIGN, FONT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_corner, percent_chart, y_range,
+    DESIGN, FONT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_corner, percent_chart, titled, y_range,
 };
 use super::data::Data;
 use crate::model::curve::Curve;
@@ -91,7 +91,7 @@ pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks
     } else {
         "Swing foot: design curves and each walk's terrain-adapted heel height, step by step"
     };
-    let root = root.titled(title, (FONT, 34)).map_err(err)?;
+    let root = titled(&root, title, 34)?;
     let areas = root.split_evenly((1, 3));
     let design = walks[0].1.run.gait.design_curves();
     let heights: Vec<(String, Vec<Sampled>)> = walks
@@ -130,7 +130,7 @@ pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks
 /// curve.
 pub(super) fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'_>) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled("Ankle through the swing, and heel rise", (FONT, 34)).map_err(err)?;
+    let root = titled(&root, "Ankle through the swing, and heel rise", 34)?;
     let areas = root.split_evenly((1, 2));
     let design = d.run.gait.design_curves();
     let steps: Vec<Vec<(f64, f64)>> = d.run.step_plans.iter().map(|p| sample(&p.swing_ankle_deg, 1.0)).collect();

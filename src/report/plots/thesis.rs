@@ -2,7 +2,7 @@
 //! of lines (with an optional grey band and a shaded span), described as plain data by
 //! `report::figures` and drawn here the report's way (size, font, legend placement).
 
-use super::common::{FONT, LEGEND_FONT_PX, Res, draw_legend, err, legend_corner, y_range};
+use super::common::{FONT, LEGEND_FONT_PX, Res, draw_legend, err, legend_corner, titled, y_range};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::ops::Range;
@@ -161,7 +161,7 @@ fn marks<DB: DrawingBackend>(
 
 fn figure<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &Figure) -> Res {
     root.fill(&WHITE).map_err(err)?;
-    let root = root.titled(&f.title, (FONT, 32)).map_err(err)?;
+    let root = titled(&root, &f.title, 32)?;
     let rows = f.rows.max(1);
     let columns = f.panels.len().div_ceil(rows).max(1);
     for (area, p) in root.split_evenly((rows, columns)).iter().zip(&f.panels) {

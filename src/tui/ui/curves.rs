@@ -217,23 +217,34 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
     f.render_widget(chart, inner);
 }
 
-/// The chart's bottom border: the x axis's name, then each line's name in its colour and the
-/// control points' mark, where the border has room for them all (`width` columns).
+/// The chart's bottom border: the x axis's name, then the chart's lines named in their
+/// colours and the control points' mark, as fully as `width` columns allow. The names are
+/// the chart's kind's, not the lines drawn this frame: a swing chart draws "this step" only
+/// while a leg swings, and naming what was drawn made the border change at every toe-off
+/// and heel strike. The two-curve pelvis charts name theirs in the title.
 fn bottom_border(data: &CurveData, width: u16) -> Line<'static> {
-    let axis = format!(" x: {} ", data.x_label);
-    let mut names: Vec<Span<'static>> = Vec::new();
-    for (name, colour, _) in &data.lines {
-        names.push(Span::styled(format!("─ {name}"), Style::new().fg(*colour)));
-        names.push(Span::raw(" "));
-    }
-    names.push(Span::styled("• points", Style::new().fg(Color::Yellow)));
-    names.push(Span::raw(" "));
-    let names_width: usize = names.iter().map(Span::width).sum();
-    let mut spans = vec![Span::raw(axis)];
-    if spans[0].width() + names_width <= usize::from(width) {
-        spans.extend(names);
-    }
-    Line::from(spans)
+    let axis = Span::raw(format!(" x: {} ", data.x_label));
+    let names: &[(&str, &str, Color)] = if data.lines.iter().any(|l| l.0 == "live") {
+        &[("live", "live", Color::Cyan)]
+    } else if data.lines.iter().any(|l| l.0 == "design") {
+        &[("this step", "step", Color::Cyan), ("design", "design", Color::DarkGray)]
+    } else {
+        &[]
+    };
+    let spans = |short: bool| {
+        let mut spans = vec![axis.clone()];
+        for &(long, brief, colour) in names {
+            spans.push(Span::styled(format!("─ {}", if short { brief } else { long }), Style::new().fg(colour)));
+            spans.push(Span::raw(" "));
+        }
+        spans.push(Span::styled(if short { "• pts" } else { "• points" }, Style::new().fg(Color::Yellow)));
+        spans.push(Span::raw(" "));
+        Line::from(spans)
+    };
+    [spans(false), spans(true)]
+        .into_iter()
+        .find(|line| line.width() <= usize::from(width))
+        .unwrap_or_else(|| Line::from(vec![axis.clone()]))
 }
 
 /// The chart's title, its segment names ("ds>ms", "ms>ds") drawn in their lines' colours:
@@ -340,7 +351,7 @@ fn joints_title(traced: bool, [t0, t1]: [f64; 2], width: u16) -> String {
     if !traced {
         return " Joint angles (deg) ".into();
     }
-    [format!(" Joint angles (deg), {t0:.1} to {t1:.1} s "), format!(" Joint angles (deg), {t0:.0}-{t1:.0} s ")]
+    [format!(" Joint angles (deg), {t0:.1} to {t1:.1} s "), format!(" Joint angles (deg), to {t1:.1} s ")]
         .into_iter()
         .find(|t| t.chars().count() + 2 <= usize::from(width))
         .unwrap_or_else(|| " Joint angles (deg) ".into())
@@ -382,6 +393,7 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     // One point a cell column (lines join them): more would only cost drawing time.
     let stride = (app.traces.len() / usize::from(inner.width).max(1)).max(1);
     let samples: Vec<_> = app.traces.iter().step_by(stride).collect();
+    let mut traces = Vec::with_capacity(3);
     for (j, name) in ["hip flexion", "knee flexion", "ankle dorsiflexion"].iter().enumerate() {
         let right: Vec<(f64, f64)> = samples.iter().map(|(t, a, _)| (*t, a[j])).collect();
         let left: Vec<(f64, f64)> = samples.iter().map(|(t, a, _)| (*t, a[j + 3])).collect();
@@ -402,8 +414,17 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1).chain(band.iter().flat_map(|b| [b.1, b.2])));
         let room = usize::from(inner.width).saturating_sub(name.chars().count() + 2);
         let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, app.walk_speed_mps(), room));
+        traces.push((name, note, right, left, band, y));
+    }
+    // One gutter for the three, so that they share a time axis: sized each to its own labels,
+    // the knee's ("-8.05") started two columns right of the others.
+    let gutter =
+        traces.iter().map(|t| format!("{:.0}", t.5[0]).len().max(format!("{:.0}", t.5[1]).len())).max().unwrap_or(0)
+            as u16
+            + 1;
+    for (j, (name, note, right, left, band, y)) in traces.into_iter().enumerate() {
         let trace = Trace { name, note, lines: [(&right, RIGHT), (&left, LEFT)], band: &band };
-        draw_trace(f, rows[j], &trace, [t0, t1], y, marker);
+        draw_trace(f, rows[j], &trace, [t0, t1], y, gutter, marker);
     }
 }
 
@@ -416,16 +437,17 @@ struct Trace<'a> {
     band: &'a [(f64, f64, f64)],
 }
 
-/// A small line chart: the name on its first row, the y range at the left, both legs' lines
-/// on one canvas. A `Chart` would paint each line on its own canvas layer over the whole
-/// area; one layer halves the joint panel's drawing time (where the lines cross, the later
-/// one's colour shows, as with layers).
-fn draw_trace(f: &mut Frame, area: Rect, trace: &Trace<'_>, x: [f64; 2], y: [f64; 2], marker: Marker) {
+/// A small line chart: the name on its first row, the y range at the left in a column
+/// `gutter` cells wide, both legs' lines on one canvas. A `Chart` would paint each line on its
+/// own canvas layer over the whole area; one layer halves the joint panel's drawing time
+/// (where the lines cross, the later one's colour shows, as with layers).
+fn draw_trace(f: &mut Frame, area: Rect, trace: &Trace<'_>, x: [f64; 2], y: [f64; 2], gutter: u16, marker: Marker) {
     if area.height < 2 || area.width < 8 {
         return;
     }
-    let (hi, lo) = (label(y[1]).content.into_owned(), label(y[0]).content.into_owned());
-    let gutter = hi.len().max(lo.len()) as u16 + 1;
+    // Whole degrees: the curve charts' two decimals under 10 made one trace's labels wider
+    // than the others' ("-1.44" beside "42") and jump as the scale moved.
+    let (hi, lo) = (format!("{:.0}", y[1]), format!("{:.0}", y[0]));
     let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
     let mut heading = vec![Span::styled(trace.name.to_string(), Style::new().fg(Color::Gray))];
     if let Some(note) = &trace.note {

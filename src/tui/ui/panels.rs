@@ -154,38 +154,48 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
     let method = if o.enabled { o.method.name() } else { "off" };
     // The landscape's x-axis name in the bottom border: ratatui draws an axis title on the
     // chart's lowest data row, where it hid the cheapest candidates.
-    let axis = app.landscape.as_ref().map(|(step, _)| Line::raw(format!(" x: step {step}'s pelvis x in range (m) ")));
+    // The landscape is its own scan of the range, finer than most methods' candidates: a
+    // reader saw cheaper reachable positions beside the one the method chose from its nine.
+    let axis = app.landscape.as_ref().map(|(step, scan)| {
+        let long = format!(" x: step {step}'s pelvis x (m), {} scanned ", scan.len());
+        let fits = long.chars().count() + 2 <= usize::from(area.width);
+        Line::raw(if fits { long } else { format!(" x: step {step}'s pelvis x (m) ") })
+    });
     let inner = super::panel(f, area, Line::raw(optimiser_title(method, area.width)), axis);
     let [table_area, chart_area, key_area] =
         Layout::vertical([Constraint::Percentage(45), Constraint::Fill(1), Constraint::Length(1)]).areas(inner);
     draw_step_table(f, table_area, app);
     draw_landscape(f, chart_area, app, marker);
-    f.render_widget(Paragraph::new(landscape_key()), key_area);
+    f.render_widget(Paragraph::new(landscape_key(key_area.width)), key_area);
 }
 
 /// The optimiser panel's title for a panel `width` columns wide: the keys said in words, in
 /// fewer words where the panel is narrow (at 80 columns the full title lost "method)").
 fn optimiser_title(method: &str, width: u16) -> String {
-    let full = format!(" Optimiser: {method} (o: re-run, m: method) ");
+    [
+        format!(" Optimiser: {method} (o: re-run, m: method) "),
+        format!(" Optimiser: {method} (o run, m method) "),
+        format!(" Optimiser: {method} "),
+    ]
+    .into_iter()
     // The border's corners take two columns.
-    if full.chars().count() + 2 <= usize::from(width) {
-        full
-    } else {
-        format!(" Optimiser: {method} (o run, m method) ")
-    }
+    .find(|t| t.chars().count() + 2 <= usize::from(width))
+    .unwrap_or_else(|| " Optimiser ".into())
 }
 
 /// What the landscape's marks are, one line under it. ratatui's own legend box hides itself
 /// where it would take more than a third of the chart — at 80 columns always — and at 160x48
 /// it covered the cheapest candidates; the line is always there and covers nothing.
-fn landscape_key() -> Line<'static> {
+fn landscape_key(width: u16) -> Line<'static> {
+    let cost = if width >= 36 { " cost rad²/s³" } else { " cost" };
+    let unreachable = if width >= 29 { " unreachable " } else { " no reach " };
     Line::from(vec![
         Span::styled("•", Style::new().fg(Color::LightRed)),
-        Span::raw(" unreachable "),
+        Span::raw(unreachable),
         Span::styled("█", Style::new().fg(Color::Yellow)),
         Span::raw(" chosen "),
         Span::styled("─", Style::new().fg(Color::Cyan)),
-        Span::raw(" cost rad²/s³"),
+        Span::raw(cost),
     ])
 }
 
@@ -216,10 +226,12 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
     if matches!(lines.last(), Some(TableLine::Caption(_))) {
         lines.pop();
     }
-    let cost = |c: Option<f64>| c.map_or("unreach".into(), |c| format!("{c:.0}"));
+    // "none": no leg reached there, so no cost (the column is six cells wide).
+    let cost = |c: Option<f64>| c.map_or("none".into(), |c| format!("{c:.0}"));
     // Written cell by cell (see `put`): the cells a `Table` with these column widths and one
-    // space between columns gives.
-    const WIDTHS: [u16; 7] = [5, 1, 5, 7, 7, 5, 5];
+    // space between columns gives. 38 cells, the 80-column panel's width: at 41 the search
+    // time was dropped there without a word.
+    const WIDTHS: [u16; 7] = [4, 1, 5, 6, 6, 5, 5];
     let buf = f.buffer_mut();
     let end = table_area.x + table_area.width;
     let row_at = |buf: &mut Buffer, y: u16, cells: &[String], style: Style| {
@@ -236,7 +248,8 @@ fn draw_step_table(f: &mut Frame, table_area: Rect, app: &App) {
         }
     };
     if table_area.height > 0 {
-        let header = ["step", "", "ratio", "cost", "fixed", "feas", "µs"].map(String::from);
+        // "rule": the fixed rule's cost ("fixed" read as a yes or no); "s": the side.
+        let header = ["step", "s", "ratio", "cost", "rule", "feas", "µs"].map(String::from);
         row_at(buf, table_area.y, &header, Style::new().bold());
     }
     for (line, y) in lines.iter().zip(table_area.y + 1..) {
@@ -289,7 +302,9 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
     let (ymin, ymax) = feasible.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
     let y = if ymin.is_finite() { [ymin * 0.95, ymax * 1.05 + 1e-9] } else { [0.0, 1.0] };
     let span = (hi - lo).max(1e-6);
-    let unreachable: Vec<(f64, f64)> = unreachable_x.iter().map(|x| (*x, y[0])).collect();
+    // On the top row: on the bottom one, beside the lowest cost's label, they read as the
+    // cheapest positions, where an unreachable one has no cost at all.
+    let unreachable: Vec<(f64, f64)> = unreachable_x.iter().map(|x| (*x, y[1])).collect();
     let chart = Chart::new(vec![
         Dataset::default()
             .name("unreachable")
