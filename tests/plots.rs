@@ -323,3 +323,22 @@ fn the_cost_per_step_line_breaks_where_no_step_was_costed() {
     assert_eq!(lines.len(), 2, "{lines:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The ankle plot draws each swing as walked beside each step's planned curve: at brisk the
+/// planned curve dips to -23 deg after toe-off, where the foot, easing from its toe-off pitch
+/// into it, takes the ankle to -17 to -20.5 only, and the plot alone had read as the push-off.
+#[test]
+fn the_ankle_plot_shows_each_swing_as_walked_beside_the_plan() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-ankle-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report_of(&dir, &["configs/brisk.toml"]);
+    let svg = std::fs::read_to_string(dir.join("plots/ankle.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
+    assert!(texts.contains(&"planned, each step") && texts.contains(&"walked, each swing"), "{texts:?}");
+    // The walked swings in the left leg's blue: one line a whole swing, both legs.
+    let walked =
+        doc.descendants().filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#1E50C8")).count();
+    assert!(walked >= 10, "{walked} walked swings drawn");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
