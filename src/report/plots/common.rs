@@ -10,6 +10,24 @@ pub const SIZE: (u32, u32) = (1600, 1000);
 /// The embedded font's family name (registered by [`super::write_plots`]).
 pub(super) const FONT: &str = "sans-serif";
 
+/// `area` less a band across its bottom with `caption` drawn in it, `size` px, centred.
+pub(super) fn captioned<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    caption: &str,
+    size: u32,
+) -> Result<DrawingArea<DB, plotters::coord::Shift>, String> {
+    let (_, height) = area.dim_in_pixel();
+    let (rest, band) = area.split_vertically(height.saturating_sub(size * 2));
+    let (width, band_height) = band.dim_in_pixel();
+    let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
+    band.draw_text(caption, &style, (width as i32 / 2, band_height as i32 / 2)).map_err(err)?;
+    Ok(rest)
+}
+
+/// What the cycle plots' event lines are: named by three letters, explained nowhere.
+pub(super) const EVENTS_CAPTION: &str = "Event lines, the right leg's cycle (0 and 100 %: right heel strike): \
+     LTO left toe-off, LHS left heel strike, RTO right toe-off";
+
 /// `area` with `title` drawn across its top in `size` px, and the rest of the area. plotters'
 /// own `titled` hangs the text from the area's top pixel row by the font's estimated ascent,
 /// which is short: every title lost its ascenders (the dots of its i's, the tops of l, t, J).

@@ -2,7 +2,8 @@
 //! joint angles, with compared walks overlaid and measured adults' mean ± 1 SD behind them.
 
 use super::common::{
-    FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, draw_legend, err, legend_height_px, percent_chart, titled, y_range,
+    EVENTS_CAPTION, FONT, LEFT, LEGEND_FONT_PX, PALETTE, RIGHT, Res, captioned, draw_legend, err, legend_height_px,
+    percent_chart, titled, y_range,
 };
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
@@ -111,6 +112,7 @@ fn pelvis_cycles(d: &Data<'_>) -> Vec<Cycle> {
 pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[(String, Data<'_>)]) -> Res {
     root.fill(&WHITE).map_err(err)?;
     let root = titled(&root, "Pelvis over the right gait cycle (mean and min-max band; grey: measured adults)", 34)?;
+    let root = captioned(&root, EVENTS_CAPTION, 20)?;
     let areas = root.split_evenly((2, 3));
     let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
     let reference = speed_matched(&walks[0].1);
@@ -194,6 +196,7 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         "Joint angles of the right leg, each walk over its own cycle (min-max band; grey: measured adults)"
     };
     let root = titled(&root, title, 34)?;
+    let root = captioned(&root, EVENTS_CAPTION, 20)?;
     let areas = root.split_evenly((1, 3));
     type Pick = fn(&LegFrame) -> f64;
     let joints: [(&str, &str, &str, Pick); 3] = [
