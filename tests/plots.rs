@@ -126,6 +126,8 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
         .filter(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.contains("Fukuchi 2018")))
         .count();
     assert_eq!(legends, 3, "the normative band is named in the hip, knee and ankle charts");
+    // The event lines' letters are explained under the charts.
+    assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.contains("LTO left toe-off, LHS left heel strike")));
     // Over 4 cycles (2 measured) the legs differ by 0.5 deg or more somewhere: plain "left".
     assert!(doc.descendants().filter_map(|n| n.text()).all(|t| !t.contains("under right")));
     assert!(doc.descendants().any(|n| n.text().is_some_and(|t| t.trim() == "left")));
