@@ -44,12 +44,21 @@ fn cycle_chart<DB: DrawingBackend>(
         .axis_desc_style((FONT, 22))
         .draw()
         .map_err(err)?;
-    for (name, color, c) in lines {
+    for (i, (name, color, c)) in lines.iter().enumerate() {
+        // The last line drawn is thin over a thick one before it: a level walk's left leg lay
+        // exactly over its right, and the red line the legend promised was nowhere to be seen.
+        let width = match lines.len() - 1 - i {
+            0 if lines.len() > 1 => 2,
+            1 => 5,
+            _ => 3,
+        };
         chart.draw_series(std::iter::once(Polygon::new(c.band.clone(), color.mix(0.18)))).map_err(err)?;
-        let line = chart.draw_series(LineSeries::new(c.mean.clone(), color.stroke_width(3))).map_err(err)?;
+        let line = chart.draw_series(LineSeries::new(c.mean.clone(), color.stroke_width(width))).map_err(err)?;
         let mut rows = name.lines();
         if let Some(first) = rows.next() {
-            line.label(first).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
+            let color = *color;
+            line.label(first)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(width)));
         }
         // A name too wide for a panel's legend goes on in rows without a swatch, so that it
         // still reads as one entry.
