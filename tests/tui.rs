@@ -205,6 +205,10 @@ fn optimiser_panel_shows_each_step_and_the_landscape() {
     let thesis_cost = app.walker.step_plans().last().unwrap().optimisation.chosen.cost.unwrap();
     assert!(rerun.chosen.cost.unwrap() <= thesis_cost);
     assert!(screen(&app, 80, 24).contains("golden"));
+    // The landscape is the re-run step's, with the re-run's choice marked and named: it had
+    // stayed on whatever step the walk planned last.
+    assert_eq!(app.landscape.as_ref().unwrap().0, rerun.step);
+    assert!(screen(&app, 80, 24).contains("• unreachable █ chosen █ re-run ─ cost"));
 }
 
 #[test]

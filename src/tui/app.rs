@@ -550,6 +550,9 @@ impl App {
         let last = self.walker.step_plans().last().map(|p| p.optimisation.clone());
         let Some(last) = last else { return };
         let fixed = Candidate { x: problem.fixed_rule_x(), y: problem.ds.y, cost: problem.fixed_rule_cost };
+        // The landscape is the re-run step's, scanned with the settings it ran with: a walk
+        // that had planned on since showed its newest step's, and the re-run's choice nowhere.
+        self.landscape = Some((last.step, problem.landscape(&self.walker, 41)));
         self.rerun = Some(StepRecord {
             method: Some(problem.settings.method),
             evaluations: candidates.len() as u32,

@@ -166,7 +166,8 @@ pub fn draw_optimiser(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
         Layout::vertical([Constraint::Percentage(45), Constraint::Fill(1), Constraint::Length(1)]).areas(inner);
     draw_step_table(f, table_area, app);
     draw_landscape(f, chart_area, app, marker);
-    f.render_widget(Paragraph::new(landscape_key(key_area.width)), key_area);
+    let rerun_shown = app.rerun.as_ref().zip(app.landscape.as_ref()).is_some_and(|(r, (step, _))| r.step == *step);
+    f.render_widget(Paragraph::new(landscape_key(key_area.width, rerun_shown)), key_area);
 }
 
 /// The optimiser panel's title for a panel `width` columns wide: the keys said in words, in
@@ -186,17 +187,23 @@ fn optimiser_title(method: &str, width: u16) -> String {
 /// What the landscape's marks are, one line under it. ratatui's own legend box hides itself
 /// where it would take more than a third of the chart — at 80 columns always — and at 160x48
 /// it covered the cheapest candidates; the line is always there and covers nothing.
-fn landscape_key(width: u16) -> Line<'static> {
-    let cost = if width >= 36 { " cost rad²/s³" } else { " cost" };
+fn landscape_key(width: u16, rerun: bool) -> Line<'static> {
+    // With a re-run on the chart its mark takes the unit's room.
+    let cost = if width >= 36 && !rerun { " cost rad²/s³" } else { " cost" };
     let unreachable = if width >= 29 { " unreachable " } else { " no reach " };
-    Line::from(vec![
+    let mut spans = vec![
         Span::styled("•", Style::new().fg(Color::LightRed)),
         Span::raw(unreachable),
         Span::styled("█", Style::new().fg(Color::Yellow)),
         Span::raw(" chosen "),
-        Span::styled("─", Style::new().fg(Color::Cyan)),
-        Span::raw(cost),
-    ])
+    ];
+    if rerun {
+        spans.push(Span::styled("█", Style::new().fg(Color::LightMagenta)));
+        spans.push(Span::raw(" re-run "));
+    }
+    spans.push(Span::styled("─", Style::new().fg(Color::Cyan)));
+    spans.push(Span::raw(cost));
+    Line::from(spans)
 }
 
 /// A line of the optimiser's table under its header.
@@ -299,6 +306,13 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
         .find(|p| p.step == *step)
         .and_then(|p| p.optimisation.chosen.cost.map(|k| vec![(p.optimisation.chosen.x - lo, k)]))
         .unwrap_or_default();
+    // A re-run of this step, chosen by the method it ran with.
+    let rerun: Vec<(f64, f64)> = app
+        .rerun
+        .as_ref()
+        .filter(|r| r.step == *step)
+        .and_then(|r| r.chosen.cost.map(|k| vec![(r.chosen.x - lo, k)]))
+        .unwrap_or_default();
     let (ymin, ymax) = feasible.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
     let y = if ymin.is_finite() { [ymin * 0.95, ymax * 1.05 + 1e-9] } else { [0.0, 1.0] };
     let span = (hi - lo).max(1e-6);
@@ -324,6 +338,12 @@ fn draw_landscape(f: &mut Frame, chart_area: Rect, app: &App, marker: Marker) {
             .graph_type(GraphType::Scatter)
             .style(Style::new().fg(Color::Yellow))
             .data(&chosen),
+        Dataset::default()
+            .name("re-run")
+            .marker(Marker::Block)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::LightMagenta))
+            .data(&rerun),
     ])
     .x_axis(Axis::default().bounds([0.0, span]).labels(["0".to_string(), format!("{span:.2}")]))
     .y_axis(Axis::default().bounds(y).labels([format!("{:.0}", y[0]), format!("{:.0}", y[1])]))
