@@ -559,6 +559,18 @@ fn g_shows_a_grid_of_curves_at_every_common_size() {
         assert_eq!(shown, expected, "{width}x{height} after g:\n{after}");
         assert!(shown > shown_before.min(1), "{width}x{height}: g changed nothing");
         assert!(after.contains("curves in a grid"), "{width}x{height}: the status line says so");
+        if width == 160 {
+            // A title too long for its grid cell gives up its clause, then its unit, before
+            // any of its name: it read "pelvic obliquity (deg" and "shoulder flexion, righ".
+            assert!(after.contains("┌ pelvic obliquity ─"), "{after}");
+            let mut app = app;
+            // The shoulder's chart is the twelfth.
+            for _ in 0..11 {
+                key(&mut app, KeyCode::Char('c'));
+            }
+            let shoulders = screen(&app, width, height);
+            assert!(shoulders.contains("┌ shoulder flexion (deg) "), "{shoulders}");
+        }
     }
 }
 

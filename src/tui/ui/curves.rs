@@ -204,7 +204,8 @@ pub(crate) fn draw_curve(f: &mut Frame, area: Rect, app: &App, view: CurveView, 
     }
     // The x axis's name in the bottom border: ratatui draws an axis title on the chart's
     // lowest data row, where it hid the curve's minimum (the pelvic rotation at mid-cycle).
-    let inner = super::panel(f, area, coloured_title(&data), Some(bottom_border(&data, area.width.saturating_sub(2))));
+    let title = coloured_title(&data, &fitted_title(data.title, area.width.saturating_sub(2)));
+    let inner = super::panel(f, area, title, Some(bottom_border(&data, area.width.saturating_sub(2))));
     let (x_labels, y_labels) = ([label(x[0]), label(x[1])], [label(y[0]), label(y[1])]);
     let graph = graph_area(inner, &x_labels, &y_labels);
     app.hits.borrow_mut().charts.push(ChartHit { view, graph, x, y });
@@ -251,9 +252,9 @@ fn bottom_border(data: &CurveData, width: u16) -> Line<'static> {
 /// the pelvis charts draw two curves, and the legend that would name them fits only in a
 /// chart far wider than the lab's (80x24 and 160x48 showed none), so the colours were
 /// unexplained.
-fn coloured_title(data: &CurveData) -> Line<'static> {
+fn coloured_title(data: &CurveData, title: &str) -> Line<'static> {
     let mut spans = vec![Span::raw(" ")];
-    let mut rest = data.title;
+    let mut rest = title;
     while let Some((at, name, colour)) = [("ds>ms", 0), ("ms>ds", 1)]
         .iter()
         .filter_map(|(name, i)| Some((rest.find(name)?, *name, data.lines.get(*i)?.1)))
@@ -265,6 +266,32 @@ fn coloured_title(data: &CurveData) -> Line<'static> {
     }
     spans.push(Span::raw(format!("{rest} ")));
     Line::from(spans)
+}
+
+/// `title` as it fits `width` columns with a space either side: whole, else without the
+/// clause between its first comma and its unit ("shoulder flexion, right (deg)" → "shoulder
+/// flexion (deg)"; in the 2x2 grid at 160x48 it read "shoulder flexion, righ"), else the
+/// name without its unit, else the name cut short. The pelvis charts' segment names are their legend and
+/// stay.
+fn fitted_title(title: &str, width: u16) -> String {
+    let room = usize::from(width).saturating_sub(2);
+    if title.chars().count() <= room {
+        return title.to_string();
+    }
+    let (name, unit) = title.rfind(" (").map_or((title, ""), |at| title.split_at(at));
+    let name = match name.find(", ") {
+        Some(at) if !title.contains("ds>ms") => &name[..at],
+        _ => name,
+    };
+    let keep = room.saturating_sub(unit.chars().count());
+    if name.chars().count() <= keep {
+        format!("{name}{unit}")
+    } else if name.chars().count() <= room {
+        // The name whole rather than its unit ("pelvic obliquity", not "pelvic obliqui… (deg)").
+        name.to_string()
+    } else {
+        name.chars().take(room.saturating_sub(1)).chain(std::iter::once('…')).collect()
+    }
 }
 
 /// The cells a `Chart` with these labels (and no axis titles) plots its data in, as
