@@ -95,14 +95,15 @@ pub fn draw(f: &mut Frame, app: &App, marker: Marker) {
         walk::draw(f, walk_area, app, marker);
         let [tabs, panel] = Layout::vertical([Constraint::Length(1), Constraint::Min(1)]).areas(side);
         let selected = Panel::ALL.iter().position(|p| *p == app.panel).unwrap_or(0);
+        let (titles, divider) = tab_titles(tabs.width);
         f.render_widget(
-            Tabs::new(Panel::ALL.map(Panel::title))
+            Tabs::new(titles)
                 .select(selected)
                 .highlight_style(Style::new().reversed())
                 // No padding, the divider spaced: the four titles fit a 40-column half of an
                 // 80-column terminal whole (padded, "Optimiser" lost its last letter).
                 .padding("", "")
-                .divider(" | "),
+                .divider(divider),
             tabs,
         );
         record_tabs(app, tabs, panel);
@@ -156,10 +157,17 @@ fn optimiser_area_of(middle: Rect) -> Rect {
 fn record_tabs(app: &App, tabs: Rect, panel: Rect) {
     let mut hits = app.hits.borrow_mut();
     let mut x = tabs.x;
-    for p in Panel::ALL {
-        let width = p.title().chars().count() as u16;
+    let (titles, divider) = tab_titles(tabs.width);
+    for (p, title) in Panel::ALL.into_iter().zip(titles) {
+        let width = title.chars().count() as u16;
         hits.tabs.push((Rect { x, y: tabs.y, width, height: 1 }.intersection(tabs), p));
-        x += width + 3;
+        x += width + divider.chars().count() as u16;
     }
     hits.panels.push((panel, app.panel));
+}
+
+/// The tab bar's titles and divider for a bar `width` columns wide: the panels' names, or
+/// below 40 columns short ones, so that every tab shows (at 60x20 "Optimiser" fell off).
+fn tab_titles(width: u16) -> ([&'static str; 4], &'static str) {
+    if width >= 40 { (Panel::ALL.map(Panel::title), " | ") } else { (["Params", "Curves", "Joints", "Optim"], "|") }
 }
