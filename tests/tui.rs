@@ -90,6 +90,8 @@ fn default_screen_at_160x48_shows_every_panel() {
     {
         assert!(text.contains(part), "{part} missing:\n{text}");
     }
+    // The curve chart names its line, its points and its cursor (red, as the right leg is).
+    assert!(text.contains("x: right cycle (0-1) ─ live • points │ now"), "{text}");
     // The joint traces' time span is in their title, as the walk's clock reads it (150
     // frames at 60 fps walked: the traces end at 2.5 s).
     let span = text.split("Joint angles (deg), ").nth(1).and_then(|t| t.split(" s ").next()).expect("a time span");

@@ -232,7 +232,10 @@ fn bottom_border(data: &CurveData, width: u16) -> Line<'static> {
     } else {
         &[]
     };
-    let spans = |short: bool| {
+    // The red cursor is where the walk is on the curve (the charts that have one: the same
+    // kinds that name their lines): unnamed, it read as the right leg's red.
+    let cursor = !names.is_empty();
+    let spans = |short: bool, now: bool| {
         let mut spans = vec![axis.clone()];
         for &(long, brief, colour) in names {
             spans.push(Span::styled(format!("─ {}", if short { brief } else { long }), Style::new().fg(colour)));
@@ -240,9 +243,13 @@ fn bottom_border(data: &CurveData, width: u16) -> Line<'static> {
         }
         spans.push(Span::styled(if short { "• pts" } else { "• points" }, Style::new().fg(Color::Yellow)));
         spans.push(Span::raw(" "));
+        if now {
+            spans.push(Span::styled("│ now", Style::new().fg(Color::Red)));
+            spans.push(Span::raw(" "));
+        }
         Line::from(spans)
     };
-    [spans(false), spans(true)]
+    [spans(false, cursor), spans(false, false), spans(true, cursor), spans(true, false)]
         .into_iter()
         .find(|line| line.width() <= usize::from(width))
         .unwrap_or_else(|| Line::from(vec![axis.clone()]))
