@@ -338,6 +338,11 @@ fn the_ankle_plot_shows_each_swing_as_walked_beside_the_plan() {
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).map(str::trim).collect();
     assert!(texts.contains(&"planned, each step") && texts.contains(&"walked, each swing"), "{texts:?}");
+    // The heel rise as walked beside its design at this walk's stride; its angle kept in
+    // (-180, 180] (past 60 deg the heel's direction crossed atan2's cut: a -300 deg spike).
+    assert!(texts.contains(&"walked, each heel rise"), "{texts:?}");
+    let lowest = numeric_labels(&svg).iter().map(|l| l.2).fold(f64::INFINITY, f64::min);
+    assert!(lowest > -50.0, "an axis reaches {lowest}");
     // The walked swings in the left leg's blue: one line a whole swing, both legs.
     let walked =
         doc.descendants().filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#1E50C8")).count();

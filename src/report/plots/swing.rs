@@ -6,8 +6,10 @@ use super::common::{
     y_range,
 };
 use super::data::Data;
+use crate::model::body::HEEL_FRACTION;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
+use crate::model::walk::HEEL_RISE_DESIGN_STRIDE_M;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -160,6 +162,45 @@ fn walked_swing_ankles(d: &Data<'_>) -> Vec<Sampled> {
     swings
 }
 
+/// Each heel rise's foot-ground angle as walked (deg, heel up +), over its own span, from
+/// the heel's place below and behind the ankle: the chart drew the design alone, and the
+/// reach rescue's extra lift (`Gait::target_of`) was nowhere to be seen.
+fn walked_heel_rises(d: &Data<'_>) -> Vec<Sampled> {
+    let dims = &d.run.gait.resolved().dims;
+    // The heel's direction from the ankle with the foot flat, in the foot's plane.
+    let flat = (-dims.ankle_height).atan2(-HEEL_FRACTION * dims.foot_length);
+    let angle = |leg: &crate::model::walk::frame::LegFrame| {
+        let v = leg.heel - leg.ankle;
+        let along = -(v.x * v.x + v.z * v.z).sqrt();
+        // Into (-180, 180]: past 60 deg the heel's direction crosses the atan2 cut.
+        let turned = flat - v.y.atan2(along);
+        (turned - std::f64::consts::TAU * (turned / std::f64::consts::TAU).round()).to_degrees()
+    };
+    let mut rises: Vec<Sampled> = Vec::new();
+    for side in 0..2 {
+        let mut current: Option<(u64, Vec<f64>, bool)> = None;
+        for (i, f) in d.run.frames.iter().enumerate() {
+            let leg = &f.legs[side];
+            let rising = leg.leg_phase == crate::model::walk::leg::LegPhase::HeelRise;
+            if let Some((serial, angles, _)) = &mut current
+                && rising
+                && *serial == leg.phase_serial
+            {
+                angles.push(angle(leg));
+                continue;
+            }
+            if let Some((_, angles, true)) = current.take() {
+                rises.push(over_span(&angles));
+            }
+            if rising {
+                current = Some((leg.phase_serial, vec![angle(leg)], i > 0));
+            }
+        }
+    }
+    rises.retain(|s| s.len() > 2);
+    rises
+}
+
 /// Samples at 0..100 % of their span.
 fn over_span(angles: &[f64]) -> Sampled {
     let last = angles.len().saturating_sub(1).max(1) as f64;
@@ -186,13 +227,16 @@ pub(super) fn ankle<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, d: &Data<'
         &sample(design.get(CurveName::SwingAnkle), 1.0),
         &series,
     )?;
+    // The design is drawn for a 1.8 m stride; the walk scales it by its own stride.
+    let stride_scale = d.run.gait.resolved().stride_m / HEEL_RISE_DESIGN_STRIDE_M;
+    let rises = walked_heel_rises(d);
     curve_chart(
         &areas[1],
-        "heel rise",
+        "heel rise: design at this stride, and walked",
         "% of heel-rise phase",
         "foot-ground angle (deg)",
-        &sample(design.get(CurveName::HeelRise), 1.0),
-        &[],
+        &sample(design.get(CurveName::HeelRise), stride_scale),
+        &[("walked, each heel rise".into(), LEFT, &rises)],
     )?;
     root.present().map_err(err)
 }
