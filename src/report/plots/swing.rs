@@ -10,6 +10,8 @@ use crate::model::body::HEEL_FRACTION;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::walk::HEEL_RISE_DESIGN_STRIDE_M;
+use crate::model::walk::frame::LegFrame;
+use crate::model::walk::leg::LegPhase;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -129,76 +131,58 @@ pub(super) fn swing_foot<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks
     root.present().map_err(err)
 }
 
-/// The ankle angle each swing walked, over its own span (0-100 % from the first swing frame
-/// to the last). Beside the planned curve it shows what the foot actually did: over the first
-/// 15 % of the swing the foot eases from its toe-off pitch into the curve, so at brisk the
-/// planned curve dipped to −23° where the ankle itself reached −17 to −19.5° (a reader took
-/// the planned curve for the push-off).
-fn walked_swing_ankles(d: &Data<'_>) -> Vec<Sampled> {
-    let mut swings: Vec<Sampled> = Vec::new();
+/// `value` of each leg frame through every whole `phase` either leg walked, each span over
+/// 0-100 %: a span under way at the first frame is not whole, and one still under way at
+/// the last is never closed.
+fn walked_spans(d: &Data<'_>, phase: LegPhase, value: impl Fn(&LegFrame) -> f64) -> Vec<Sampled> {
+    let mut spans: Vec<Sampled> = Vec::new();
     for side in 0..2 {
-        // (phase serial, angles, whole): a swing under way at the first frame is not whole,
-        // and one still under way at the last is never closed.
+        // (phase serial, values, whole)
         let mut current: Option<(u64, Vec<f64>, bool)> = None;
         for (i, f) in d.run.frames.iter().enumerate() {
             let leg = &f.legs[side];
-            let swinging = leg.leg_phase == crate::model::walk::leg::LegPhase::Swing;
-            if let Some((serial, angles, _)) = &mut current
-                && swinging
+            let inside = leg.leg_phase == phase;
+            if let Some((serial, values, _)) = &mut current
+                && inside
                 && *serial == leg.phase_serial
             {
-                angles.push(leg.ankle_dorsi_deg);
+                values.push(value(leg));
                 continue;
             }
-            if let Some((_, angles, true)) = current.take() {
-                swings.push(over_span(&angles));
+            if let Some((_, values, true)) = current.take() {
+                spans.push(over_span(&values));
             }
-            if swinging {
-                current = Some((leg.phase_serial, vec![leg.ankle_dorsi_deg], i > 0));
+            if inside {
+                current = Some((leg.phase_serial, vec![value(leg)], i > 0));
             }
         }
     }
-    swings.retain(|s| s.len() > 2);
-    swings
+    spans.retain(|s| s.len() > 2);
+    spans
 }
 
-/// Each heel rise's foot-ground angle as walked (deg, heel up +), over its own span, from
-/// the heel's place below and behind the ankle: the chart drew the design alone, and the
-/// reach rescue's extra lift (`Gait::target_of`) was nowhere to be seen.
+/// The ankle angle each swing walked. Beside the planned curve it shows what the foot
+/// actually did: over the first 15 % of the swing the foot eases from its toe-off pitch into
+/// the curve, so at brisk the planned curve dipped to −23° where the ankle itself reached −17
+/// to −19.5° (a reader took the planned curve for the push-off).
+fn walked_swing_ankles(d: &Data<'_>) -> Vec<Sampled> {
+    walked_spans(d, LegPhase::Swing, |leg| leg.ankle_dorsi_deg)
+}
+
+/// Each heel rise's foot-ground angle as walked (deg, heel up +), from the heel's place below
+/// and behind the ankle: the chart drew the design alone, and the stance leg's reach lifting
+/// the heel above it (`Gait::target_of`) was nowhere to be seen.
 fn walked_heel_rises(d: &Data<'_>) -> Vec<Sampled> {
     let dims = &d.run.gait.resolved().dims;
     // The heel's direction from the ankle with the foot flat, in the foot's plane.
     let flat = (-dims.ankle_height).atan2(-HEEL_FRACTION * dims.foot_length);
-    let angle = |leg: &crate::model::walk::frame::LegFrame| {
+    walked_spans(d, LegPhase::HeelRise, |leg| {
         let v = leg.heel - leg.ankle;
         let along = -(v.x * v.x + v.z * v.z).sqrt();
         // Into (-180, 180]: past 60 deg the heel's direction crosses the atan2 cut.
         let turned = flat - v.y.atan2(along);
         (turned - std::f64::consts::TAU * (turned / std::f64::consts::TAU).round()).to_degrees()
-    };
-    let mut rises: Vec<Sampled> = Vec::new();
-    for side in 0..2 {
-        let mut current: Option<(u64, Vec<f64>, bool)> = None;
-        for (i, f) in d.run.frames.iter().enumerate() {
-            let leg = &f.legs[side];
-            let rising = leg.leg_phase == crate::model::walk::leg::LegPhase::HeelRise;
-            if let Some((serial, angles, _)) = &mut current
-                && rising
-                && *serial == leg.phase_serial
-            {
-                angles.push(angle(leg));
-                continue;
-            }
-            if let Some((_, angles, true)) = current.take() {
-                rises.push(over_span(&angles));
-            }
-            if rising {
-                current = Some((leg.phase_serial, vec![angle(leg)], i > 0));
-            }
-        }
-    }
-    rises.retain(|s| s.len() > 2);
-    rises
+    })
 }
 
 /// Samples at 0..100 % of their span.
