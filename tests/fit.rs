@@ -79,15 +79,27 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
 }
 
 /// The same bad start at 0.8 m/s, where from the config's keys alone the search settled at
-/// 52.8 (hip / knee / ankle 5.98 / 8.11 / 5.45 deg, ankle r 0.54): with its second start from
-/// the middle of the ranges, 84.0 -> 2.83 (2.74 / 3.74 / 2.01, every r >= 0.963).
+/// 52.8 (hip / knee / ankle 5.98 / 8.11 / 5.45 deg, ankle r 0.54), and from those and the
+/// middle of the ranges at 8.99 once the pelvis rose over the stance leg: with the third start
+/// from the shipped calibration, 77.3 -> 2.54 (2.80 / 3.43 / 1.39, every r >= 0.972), below
+/// the default config's own 2.73 at this speed (the search improves on the calibration).
 #[test]
 fn a_bad_start_is_brought_back_at_a_slow_speed_too() {
     let mut args = vec!["fit", "configs/default.toml", "--json", "--set", "walk.speed_mps=0.8"];
     args.extend(BAD);
     let a = json(&gaitlab(&args));
     let (before, after) = (a["cost_before"].as_f64().unwrap(), a["cost_after"].as_f64().unwrap());
-    assert!(before > 50.0 && after < 3.2, "{before} -> {after}");
+    let calibrated = json(&gaitlab(&[
+        "fit",
+        "configs/default.toml",
+        "--json",
+        "--evaluations",
+        "10",
+        "--set",
+        "walk.speed_mps=0.8",
+    ]));
+    let calibrated = calibrated["cost_before"].as_f64().unwrap();
+    assert!(before > 50.0 && after < calibrated - 0.1, "{before} -> {after} (the calibration's {calibrated})");
     for k in a["curves_after"].as_array().unwrap().iter().take(3) {
         assert!(k["rms_deg"].as_f64().unwrap() <= 4.0 && k["pearson_r"].as_f64().unwrap() >= 0.95, "{k}");
     }

@@ -47,6 +47,7 @@ pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f
         "pelvis.lateral_range_cm" => unsway(r.lateral_range * 100.0),
         "pelvis.midstance_drop_cm" => r.midstance_drop * 100.0,
         "pelvis.midstance_offset_cm" => r.midstance_offset * 100.0,
+        "pelvis.stance_rise" => r.stance_rise,
         "legs.toe_off" => r.toe_off,
         "legs.heel_rise" => r.heel_rise,
         "arms.shoulder_range_deg" => deg(r.shoulder_range),

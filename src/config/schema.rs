@@ -252,6 +252,7 @@ pub static PARAMS: &[ParamSpec] = &[
     auto!(pelvis => lateral_range_cm, "cm", 0.0, 15.0, "Peak-to-peak side-to-side pelvis sway, before the sway knob"),
     auto!(pelvis => midstance_drop_cm, "cm", 0.0, 10.0, "How far below standing hip height the pelvis passes at mid-stance (its highest point)"),
     auto!(pelvis => midstance_offset_cm, "cm", -10.0, 30.0, "Pelvis ahead of the stance heel at mid-stance"),
+    auto!(pelvis => stance_rise, "", 0.0, 1.0, "How far the pelvis rises from its keyed height toward the straight stance leg through single support, as a slow walker vaults over it: 0 none, 1 to the leg's reach"),
     real!(pelvis => trunk_lean_deg, "deg", -10.0, 30.0, "Forward lean of the trunk"),
     real!(pelvis => rest_tilt_deg, "deg", 0.0, 20.0, "Anterior tilt of the pelvis's anatomical frame (the plane of the iliac spines) when standing: the joint table's hip flexion and pelvic tilt are measured against it, as gait labs measure them (Fukuchi 2018's adults: 10 on average); the figure is unchanged"),
     real!(legs => foot_flat, "cycle", 0.03, 0.3, "Cycle phase at which the heel rocker ends and the foot is flat (measured adults: within 3 deg of flat by 0.08; the thesis's 0.12 is where the loading response ends)"),

@@ -11,7 +11,7 @@ use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
 use crate::model::speed_laws::{
     DERIVED_VERTICAL_RANGE_CM, WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm,
-    midstance_offset_cm, swing_lead,
+    midstance_offset_cm, stance_rise, swing_lead,
 };
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
@@ -68,6 +68,7 @@ pub struct PelvisParams {
     pub(crate) lateral_range_cm: Option<f64>,
     pub(crate) midstance_drop_cm: Option<f64>,
     pub(crate) midstance_offset_cm: Option<f64>,
+    pub(crate) stance_rise: Option<f64>,
     pub(crate) trunk_lean_deg: f64,
     pub(crate) rest_tilt_deg: f64,
 }
@@ -360,6 +361,7 @@ impl Default for WalkParams {
                 lateral_range_cm: None,
                 midstance_drop_cm: None,
                 midstance_offset_cm: None,
+                stance_rise: None,
                 trunk_lean_deg: 3.0,
                 rest_tilt_deg: 10.0,
             },
@@ -453,6 +455,9 @@ pub struct Resolved {
     pub(crate) midstance_drop: f64,
     /// Pelvis ahead of the stance heel at mid-stance (m).
     pub(crate) midstance_offset: f64,
+    /// Share (0 to 1) of the way from the keyed height to the stance leg's reach that the
+    /// pelvis rises through single support (`walk::stance_rise`).
+    pub(crate) stance_rise: f64,
     /// Forward lean of the trunk (rad).
     pub(crate) trunk_lean: f64,
     /// Anterior tilt of the pelvis's anatomical frame against its bone (rad): what clinical
@@ -503,6 +508,8 @@ impl WalkParams {
     ///   (`speed_laws::midstance_drop_cm`);
     /// - mid-stance offset 15 cm ahead of the heel from 1.0 to 1.3 m/s, 3.3 cm further per m/s
     ///   faster and 5 cm nearer per m/s slower (`speed_laws::midstance_offset_cm`);
+    /// - stance rise all the way to the stance leg's reach up to 0.8 m/s, none from 1.3 m/s
+    ///   (`speed_laws::stance_rise`);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
     #[must_use]
     pub fn resolve(&self) -> Resolved {
@@ -557,6 +564,7 @@ impl WalkParams {
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
             midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v)) / 100.0,
+            stance_rise: p.stance_rise.unwrap_or(stance_rise(v)),
             trunk_lean: deg(p.trunk_lean_deg),
             rest_tilt: deg(p.rest_tilt_deg),
             turnout: deg(self.legs.turnout_deg),

@@ -194,6 +194,10 @@ pub struct LegState {
     /// Held walk-wide instead, a heel strike always found the other leg inside its heel rise,
     /// and a 1.3 -> 1.6 m/s walk raised its heels at 0.31 of the cycle for good, not 0.28.
     pub(crate) heel_rise: f64,
+    /// Share of the lift toward the straight stance leg (`pelvis.stance_rise`), frozen when
+    /// its step is planned, as `heel_rise` is: a live change or a pace change lifts the next
+    /// stance, never one already lifted.
+    pub(crate) stance_rise: f64,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
     /// Counts phase changes, so one phase instance can be told from the next.

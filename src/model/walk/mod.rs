@@ -25,6 +25,7 @@ pub mod pelvis;
 mod planner;
 pub mod pose;
 mod reach_guard;
+mod stance_rise;
 mod start;
 pub mod step_problem;
 pub mod timing;
@@ -250,7 +251,7 @@ impl Walker {
             let Some((at, side)) = next else { break };
             let at = at.max(self.phase);
             self.cross_key_boundaries(at);
-            let pelvis = self.pelvis_at(at);
+            let pelvis = self.pelvis_walked(at);
             let finished = self.evaluate_leg(side, at, &pelvis);
             self.legs[side.index()].pose = finished;
             self.enter_next_phase(side, at);
@@ -286,7 +287,7 @@ impl Walker {
     /// Evaluates everything at the current phase and builds the pose.
     fn evaluate_now(&mut self) {
         self.lap(FramePart::Bookkeeping);
-        let pelvis = self.pelvis_at(self.phase);
+        let pelvis = self.pelvis_walked(self.phase);
         self.lap(FramePart::Curves);
         for side in Side::BOTH {
             let hip = pelvis.hip(side.sign());

@@ -56,7 +56,14 @@ impl Walker {
         let walk_toe_off = self.gait.r.toe_off;
         self.gait.r.toe_off = self.legs[i].toe_off;
         self.legs[i].heel_rise = self.gait.r.heel_rise;
+        let leaving = self.legs[i].footfall;
         self.plan_swing_step(side, at, toe_off_pose);
+        let other = &self.legs[side.other().index()].footfall;
+        let level = self.legs[i]
+            .swing
+            .as_ref()
+            .is_some_and(|plan| super::stance_rise::on_level_ground(&[leaving, plan.to, *other]));
+        self.legs[i].stance_rise = if level { self.gait.r.stance_rise } else { 0.0 };
         self.gait.r.toe_off = walk_toe_off;
     }
 

@@ -1,0 +1,142 @@
+//! The pelvis rising over a straight stance leg through single support.
+//!
+//! The keyed height curve peaks at the forward mid-stance key, 12-16 cm ahead of the stance
+//! heel (where the late-stance knee wants it, `speed_laws::midstance_offset_cm`), but a
+//! person's hip is highest as it passes over the ankle, about 4 cm ahead of the heel: a slow
+//! walker vaults over a nearly straight leg there. Under the keyed curve the 0.8 m/s walk's
+//! hip passed over the ankle 1 cm lower than the leg reaches and its knee stayed flexed
+//! 13-15° from 12 to 24 % of the cycle, where the speed-matched norms fall from 8.3° to 5.7°
+//! (data/normative/joint_angles_by_speed.csv). So the drawn pelvis is lifted toward the
+//! height at which the stance leg reaches to `ik.reach_margin` of its length, in a window
+//! from just after heel strike to the heel rise, by the share `pelvis.stance_rise` (derived
+//! from speed: [`crate::model::speed_laws::stance_rise`]), on level ground.
+//!
+//! The planning (reach guard, optimiser, swing planner) keeps to the keyed curve, which the
+//! lift only ever raises toward a reach the stance leg has by construction; a swinging leg's
+//! target caps it, so the lift never takes the other leg out of reach.
+
+use crate::model::walk::Walker;
+use crate::model::walk::leg::{Footfall, LegPhase};
+use crate::model::walk::pelvis::PelvisPose;
+use glam::DVec3;
+
+/// How far apart in height (m) the footfalls around a stance may be for it to be lifted.
+const LEVEL_TOLERANCE_M: f64 = 0.01;
+
+/// How steep (rad) a footfall's ground may be for its stance to be lifted.
+const LEVEL_TOLERANCE_RAD: f64 = 0.0175;
+
+/// Whether a stance on these footfalls (the one the leg leaves, the one it lands on, the
+/// other leg's) is on level ground, the only ground the lift is made on: on stairs a lifted
+/// hip tipped the swinging foot's toe into a nosing (86 mm under it at 0.5 m/s on 22 cm
+/// rises) and took a rolling foot out of reach (37 reach failures); on stairs, slopes and
+/// rough ground the keyed curve's terrain rules [fig 6.14] keep the height.
+pub(crate) fn on_level_ground(footfalls: &[Footfall]) -> bool {
+    let (low, high) =
+        footfalls.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), f| (lo.min(f.heel.y), hi.max(f.heel.y)));
+    high - low <= LEVEL_TOLERANCE_M && footfalls.iter().all(|f| f.ground_angle.abs() <= LEVEL_TOLERANCE_RAD)
+}
+
+/// The lift's ramp in, in the stance leg's cycle phase after its heel strike: none before
+/// 0.04, all of it from 0.16. At 0.8 m/s (knee RMS against the speed-matched norms, the
+/// loading knee's peak; measured on a prototype whose lift could also lower the pelvis, 3.55°
+/// became 3.40° when it could not): from 0.10 to 0.24 3.80°, 12.4° at 12 %; from 0.04 to 0.16
+/// 3.55°, 8.6° at 10 % (the norms' 8.3° at 11 %); from heel strike to 0.12 3.81°, 6.5° at 3 %.
+const RISE_IN: (f64, f64) = (0.04, 0.16);
+
+/// The lift's ramp out, in cycle phase before the leg's heel rise: all of it up to 0.10
+/// before, none from the heel rise on, so a rolling foot is never asked to reach a lifted hip.
+/// Ramped out from 0.05 to 0.15 after the heel rise instead (the foot's design roll under the
+/// lifted hip), the knee RMS at 0.8 / 1.0 m/s was 3.40 / 3.13° against 3.38 / 3.22° now, but
+/// the foot rolled further over the toes to keep the hip in reach.
+const RISE_OUT_BEFORE_HEEL_RISE: (f64, f64) = (0.10, 0.0);
+
+fn smoothstep(s: f64) -> f64 {
+    let s = s.clamp(0.0, 1.0);
+    s * s * (3.0 - 2.0 * s)
+}
+
+/// How much of the lift is in force at the stance leg's cycle phase `q`, 0 to 1, for a leg
+/// whose heel rises at `heel_rise`.
+fn window(q: f64, heel_rise: f64) -> f64 {
+    let rise_in = smoothstep((q - RISE_IN.0) / (RISE_IN.1 - RISE_IN.0));
+    let (out_from, out_to) = (heel_rise - RISE_OUT_BEFORE_HEEL_RISE.0, heel_rise - RISE_OUT_BEFORE_HEEL_RISE.1);
+    let rise_out = 1.0 - smoothstep((q - out_from) / (out_to - out_from));
+    rise_in.min(rise_out)
+}
+
+/// The pelvis height at which the hip on `side_sign` is `distance` from `ankle`, the
+/// pelvis's forward and side position and its rotations kept; `None` if the ankle is further
+/// than `distance` across.
+fn height_for_reach(pose: &PelvisPose, side_sign: f64, ankle: DVec3, distance: f64) -> Option<f64> {
+    let hip = pose.hip(side_sign);
+    let across2 = (hip.x - ankle.x).powi(2) + (hip.z - ankle.z).powi(2);
+    let up2 = distance * distance - across2;
+    (up2 > 0.0).then(|| pose.position.y + (ankle.y + up2.sqrt() - hip.y))
+}
+
+impl Walker {
+    /// The pelvis the walk is drawn with at `phase`: the keyed pelvis, lifted toward the
+    /// stance leg's reach through single support (module docs).
+    pub(crate) fn pelvis_walked(&self, phase: f64) -> PelvisPose {
+        let mut pose = self.pelvis_at(phase);
+        // Setting off and settling blend the sway and rotations in and out; the lift too, so
+        // a stop or a start never makes the pelvis jump.
+        let walking = self.plan.walking_weight(phase);
+        if walking <= 0.0 {
+            return pose;
+        }
+        let r = &self.gait.r;
+        let distance = r.reach_margin * r.dims.leg_reach();
+        let keyed = pose.position.y;
+        let mut lifted: Option<f64> = None;
+        for leg in self.legs.iter().filter(|leg| leg.phase.is_stance()) {
+            let weight = walking * leg.stance_rise * window(phase - leg.cycle_start, leg.heel_rise);
+            if weight <= 0.0 {
+                continue;
+            }
+            let ankle = self.gait.target_of(leg, phase, pose.hip(leg.side.sign())).ankle;
+            let Some(reached) = height_for_reach(&pose, leg.side.sign(), ankle, distance) else { continue };
+            // Never below the keyed curve: the lift is only ever a rise.
+            let y = keyed + weight * (reached - keyed).max(0.0);
+            lifted = Some(lifted.map_or(y, |other: f64| other.min(y)));
+        }
+        let Some(mut y) = lifted else { return pose };
+        for leg in self.legs.iter().filter(|leg| leg.phase == LegPhase::Swing) {
+            let target = self.gait.target_of(leg, phase, pose.hip(leg.side.sign()));
+            if let Some(cap) = height_for_reach(&pose, leg.side.sign(), target.ankle, distance) {
+                y = y.min(cap.max(keyed));
+            }
+        }
+        pose.position.y = y;
+        pose
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lift_ramps_in_after_heel_strike_and_out_before_heel_rise() {
+        let heel_rise = 0.31;
+        assert_eq!(window(0.0, heel_rise), 0.0);
+        assert_eq!(window(RISE_IN.0, heel_rise), 0.0);
+        assert!((window(0.10, heel_rise) - 0.5).abs() < 1e-12);
+        assert_eq!(window(0.2, heel_rise), 1.0);
+        assert_eq!(window(heel_rise - 0.10, heel_rise), 1.0);
+        assert!((window(heel_rise - 0.05, heel_rise) - 0.5).abs() < 1e-12);
+        assert_eq!(window(heel_rise, heel_rise), 0.0);
+        assert_eq!(window(0.6, heel_rise), 0.0);
+    }
+
+    #[test]
+    fn the_height_for_reach_puts_the_hip_that_far_from_the_ankle() {
+        let pose = PelvisPose::new(DVec3::new(0.0, 0.9, 0.0), 0.1, 0.05, 0.02, 0.09);
+        let ankle = DVec3::new(0.1, 0.05, 0.08);
+        let y = height_for_reach(&pose, 1.0, ankle, 0.85).expect("in reach");
+        let lifted = PelvisPose { position: DVec3::new(pose.position.x, y, pose.position.z), ..pose };
+        assert!((lifted.hip(1.0).distance(ankle) - 0.85).abs() < 1e-12);
+        assert_eq!(height_for_reach(&pose, 1.0, DVec3::new(2.0, 0.0, 0.0), 0.85), None);
+    }
+}
