@@ -496,14 +496,13 @@ impl WalkParams {
     /// - step width 0.10 m at 1.3 m/s, 2 cm narrower per 1 m/s faster (≥ 0.05 m);
     /// - toe-off at 0.62 of the cycle at 1.3 m/s, 0.04 earlier per 1 m/s faster (double
     ///   support shrinks with speed);
-    /// - pelvis after Orendurff et al. 2004's speed trends: vertical range 2.8 cm at 1.3 m/s
-    ///   (the hip joint's range in this leg geometry; Orendurff's centre-of-mass range there,
-    ///   4.1 cm, would flex the loading knee to 35°, twice the 15–20° of normal gait), rising
-    ///   with Orendurff's 2.33 cm per m/s above it and 1.5 below (1.9 cm at 0.7 m/s; the slow
-    ///   walk's reach guard walks less anyway), lateral range 6.9 cm at
-    ///   0.7 m/s falling 3.44 cm per m/s (×sway);
+    /// - pelvis vertical range asked: none, so the double support is as high as the legs reach
+    ///   and the walked range is what their reach gives (`speed_laws::
+    ///   DERIVED_VERTICAL_RANGE_CM`; the thesis's Orendurff-based law asked the pelvis below
+    ///   where the legs reach and bent both knees at heel strike); lateral range 6.9 cm at
+    ///   0.7 m/s falling 3.44 cm per m/s (×sway), after Orendurff et al. 2004;
     ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
-    /// - mid-stance drop 1.1 cm at 1.3 m/s, 3.5 cm less per m/s slower (none from 0.99 m/s
+    /// - mid-stance drop 0.8 cm at 1.3 m/s, 3.5 cm less per m/s slower (none from 1.07 m/s
     ///   down) and 2 cm less per m/s faster: about as high as the stance leg reaches
     ///   (`speed_laws::midstance_drop_cm`);
     /// - mid-stance offset 15 cm ahead of the heel from 1.0 to 1.3 m/s, 3.3 cm further per m/s
