@@ -117,16 +117,18 @@ pub(crate) fn swing_lead(speed_mps: f64) -> f64 {
     (0.3 * (1.3 - speed_mps)).clamp(0.0, 0.3)
 }
 
-/// How far the pelvis rises toward the straight stance leg through single support at
+/// How far the pelvis rises toward the standing stance leg through single support at
 /// `speed_mps` when `pelvis.stance_rise` is left out (`walk::stance_rise`): all the way up to
 /// 0.8 m/s, none from 1.3 m/s, linear between. The norms' loading knee peaks at 8.3 / 11.3 /
 /// 16.5 / 19.9° at 0.8 / 1.0 / 1.3 / 1.6 m/s: a slow walker passes over a nearly straight leg,
-/// a fast one flexes it as a spring, which the keyed curve already gives. Knee RMS against
-/// the speed-matched norms with none / this law: 4.30 -> 3.40° at 0.8 m/s (the loading peak
-/// 14.8° at 19 % -> 8.6° at 10 %), 4.30 -> 3.13° at 1.0 (18.2° at 16 % -> 13.8° at 9 %); the
-/// walked pelvis vertical range 0.52 -> 0.99 cm and 1.05 -> 1.30 cm; the
-/// whole lift at 1.3 and 1.6 m/s straightened the loading knee (3° at 8-24 % against the
-/// norms' 15-16°) and took the knee RMS 3.2 -> 4.4 and 3.4 -> 4.7°.
+/// a fast one flexes it as a spring, which the keyed curve already gives. Against the
+/// speed-matched norms with none / this law (session 17's designs): knee RMS 3.85 -> 2.45° at
+/// 0.8 m/s (the loading peak 14.8° at 19 % -> 9.6° at 10 %), 4.04 -> 2.81° at 1.0 (18.2° at
+/// 16 % -> 14.2° at 9 %), ankle 2.08 -> 1.51 and 2.19 -> 1.53°, hip 3.14 -> 3.06 and 2.68 ->
+/// 2.51°; the walked pelvis vertical range 0.52 -> 0.92 cm and 1.05 -> 1.27 cm. The whole lift
+/// at 1.3 and 1.6 m/s (a session 16 prototype lifting to the leg's reach) straightened the
+/// loading knee (3° at 8-24 % against the norms' 15-16°) and took the knee RMS 3.2 -> 4.4 and
+/// 3.4 -> 4.7°.
 pub(crate) fn stance_rise(speed_mps: f64) -> f64 {
     ((1.3 - speed_mps) / 0.5).clamp(0.0, 1.0)
 }
