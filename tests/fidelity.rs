@@ -238,7 +238,7 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // lowest point sooner above 1.0 m/s (for the knee): 0.40 / 1.19 / 2.07 / 3.17 cm, the
     // norms' own stance hip through this leg chain 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 / 1.0 /
     // 1.3 / 1.6 m/s (docs/gait-model.md §12). Session 17, with the slow walks' pelvis rising
-    // over the straight stance leg (`pelvis.stance_rise`): 0.80 / 1.28 / 1.92 / 2.91 cm
+    // over the stance leg (`pelvis.stance_rise`): 0.72 / 1.27 / 1.92 / 2.91 cm
     // (session 16: 0.39 / 1.05 / 1.92 / 2.91).
     let mut previous: Option<(f64, f64)> = None;
     for speed in [0.7, 1.0, 1.3, 1.6] {

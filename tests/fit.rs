@@ -83,7 +83,8 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
 /// middle of the ranges at 8.99 once the pelvis rose over the stance leg: with the third start
 /// from the shipped calibration, 77.3 -> 2.54 (2.80 / 3.43 / 1.39, every r >= 0.972), below
 /// the default config's own 2.73 at this speed (the search improves on the calibration); with
-/// session 17's slow designs 74.8 -> 2.37 (2.82 / 2.71 / 1.57), the default's own 2.65.
+/// session 17's slow designs and mid-stance knee 75.5 -> 2.12 (2.55 / 2.47 / 1.34), the
+/// default's own 2.34.
 #[test]
 fn a_bad_start_is_brought_back_at_a_slow_speed_too() {
     let mut args = vec!["fit", "configs/default.toml", "--json", "--set", "walk.speed_mps=0.8"];
