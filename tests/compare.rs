@@ -116,6 +116,7 @@ fn the_walks_spatiotemporal_figures_come_with_the_comparison_and_agree_with_its_
 #[test]
 fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
     let norms = gaitlab::normative::SpeedNorms::built_in();
+    let pelvis = gaitlab::normative::PelvisNorms::built_in();
     for (config, blocks, curves) in [
         (
             "configs/stroll.toml",
@@ -144,12 +145,22 @@ fn the_spatiotemporal_norms_are_for_the_walks_speed_and_say_so() {
             assert!((f("cadence_norm_spm") - at.cadence_spm.0).abs() < 1e-9, "{config}");
             assert!((f("stride_length_norm_sd_m") - at.stride_length_m.1).abs() < 1e-12, "{config}");
             assert_eq!((f("norm_from_block_mps"), f("norm_to_block_mps")), (at.from_block_mps, at.to_block_mps));
+            // The pelvis beside the same adults' measured pelvis at this speed.
+            let p = pelvis.at(f("speed_mps"));
+            assert!((f("pelvis_vertical_range_norm_cm") - p.vertical_range_cm.0).abs() < 1e-9, "{config}");
+            assert!((f("pelvis_vertical_range_norm_sd_cm") - p.vertical_range_cm.1).abs() < 1e-9, "{config}");
+            assert!(f("pelvis_vertical_range_cm") > 0.5 && f("pelvis_vertical_range_cm") < 5.0, "{config}");
             // The curves' reference: the walk's speed inside the blocks' 0.796-1.799 m/s.
             assert!((f("reference_speed_mps") - f("speed_mps").clamp(0.796, 1.799)).abs() < 1e-9, "{config}");
         }
         let table = String::from_utf8_lossy(&gaitlab(&["compare", config]).stdout).to_string();
         let norms_line = table.lines().nth(2).unwrap();
         assert!(norms_line.starts_with("# norms at ") && norms_line.contains(blocks), "{config}: {table}");
+        let pelvis_line = table.lines().nth(3).unwrap();
+        assert!(
+            pelvis_line.starts_with("# pelvis vertical range: walk ") && pelvis_line.contains(" cm (walk "),
+            "{table}"
+        );
         assert!(
             table.lines().next().unwrap().ends_with(&format!(", {curves}; right gait cycle, every 2 %")),
             "{table}"

@@ -128,7 +128,7 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 /// The loading-response knee: its peak (0-25 % of the cycle, right leg's mean cycle) near the
 /// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Measured
 /// session 17, with the pelvis rising over the stance leg in slow walks (`pelvis.stance_rise`):
-/// 9.6 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.2 at 9 % at 1.0 (11.3 at 12), 18.2 at 12 %
+/// 9.3 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.1 at 10 % at 1.0 (11.3 at 12), 18.2 at 12 %
 /// at 1.3 (16.5 at 13); before, the slow walks' knee stayed flexed past the hip's passage over
 /// the ankle: 14.8 at 19 % and 18.2 at 16 %.
 #[test]
@@ -240,8 +240,14 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // 1.3 / 1.6 m/s (docs/gait-model.md §12). Session 17, with the slow walks' pelvis rising
     // over the stance leg (`pelvis.stance_rise`): 0.72 / 1.27 / 1.92 / 2.91 cm
     // (session 16: 0.39 / 1.05 / 1.92 / 2.91).
+    //
+    // Against the same adults' measured pelvis (data/normative/pelvis_vertical_by_speed.csv:
+    // the centre of their pelvis markers, 2.49 / 2.88 / 3.59 / 4.53 cm at 0.77 / 0.99 / 1.32 /
+    // 1.57 m/s), measured session 17: the walk's range is 0.29 / 0.44 / 0.54 / 0.64 of people's
+    // at 0.7 / 1.0 / 1.3 / 1.6 m/s. The gap is issue 12's, open; this holds what is there.
+    let people = gaitlab::normative::PelvisNorms::built_in();
     let mut previous: Option<(f64, f64)> = None;
-    for speed in [0.7, 1.0, 1.3, 1.6] {
+    for (speed, least_share) in [(0.7, 0.25), (1.0, 0.40), (1.3, 0.50), (1.6, 0.60)] {
         let set = format!("walk.speed_mps={speed}");
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[set]).unwrap();
@@ -252,6 +258,8 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
         let orendurff_lateral = 6.9 - 3.44 * (speed - 0.7);
         assert!((lateral - orendurff_lateral).abs() < 0.5, "{speed} m/s: lateral {lateral}");
         assert!(vertical < 4.8 + 0.5, "{speed} m/s: vertical {vertical}");
+        let measured = people.at(speed).vertical_range_cm.0;
+        assert!(vertical >= least_share * measured, "{speed} m/s: vertical {vertical} against people's {measured}");
         if let Some((v0, l0)) = previous {
             assert!(vertical > v0 + 0.4 && lateral < l0 - 0.5, "{speed} m/s: {vertical} {lateral} after {v0} {l0}");
         }

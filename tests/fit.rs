@@ -83,8 +83,8 @@ fn a_bad_start_is_brought_back_to_the_calibrated_walk_deterministically() {
 /// middle of the ranges at 8.99 once the pelvis rose over the stance leg: with the third start
 /// from the shipped calibration, 77.3 -> 2.54 (2.80 / 3.43 / 1.39, every r >= 0.972), below
 /// the default config's own 2.73 at this speed (the search improves on the calibration); with
-/// session 17's slow designs and mid-stance knee 75.5 -> 2.12 (2.55 / 2.47 / 1.34), the
-/// default's own 2.34.
+/// session 17's slow designs and mid-stance knee 79.1 -> 2.11 (2.49 / 2.51 / 1.33), below the
+/// default config's own 2.34 (its own fit: 2.10).
 #[test]
 fn a_bad_start_is_brought_back_at_a_slow_speed_too() {
     let mut args = vec!["fit", "configs/default.toml", "--json", "--set", "walk.speed_mps=0.8"];
@@ -101,7 +101,7 @@ fn a_bad_start_is_brought_back_at_a_slow_speed_too() {
         "walk.speed_mps=0.8",
     ]));
     let calibrated = calibrated["cost_before"].as_f64().unwrap();
-    assert!(before > 50.0 && after < calibrated - 0.1, "{before} -> {after} (the calibration's {calibrated})");
+    assert!(before > 50.0 && after < calibrated - 0.05, "{before} -> {after} (the calibration's {calibrated})");
     for k in a["curves_after"].as_array().unwrap().iter().take(3) {
         assert!(k["rms_deg"].as_f64().unwrap() <= 4.0 && k["pearson_r"].as_f64().unwrap() >= 0.95, "{k}");
     }

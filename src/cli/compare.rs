@@ -19,6 +19,39 @@ pub(super) fn run(path: &Path, reference: Option<&Path>, json: bool, sets: &[Str
     stdout_written(written.and_then(|()| out.flush()))
 }
 
+/// The walk's spatiotemporal figures and pelvis vertical range beside the norms at its speed:
+/// the comment lines above the table.
+fn write_figures(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
+    let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
+    writeln!(out, "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} %")?;
+    let n = &c.spatiotemporal_norms;
+    let (cad_z, stride_z) = (sd_units(cadence, n.cadence_spm), sd_units(stride, n.stride_length_m));
+    writeln!(
+        out,
+        "# norms at {:.3} m/s ({}; {}): cadence {:.1} +- {:.1} steps/min (walk {cad_z:+.2} SD), stride {:.3} +- {:.3} m (walk {stride_z:+.2} SD); no stance norm by speed",
+        n.speed_mps,
+        normative::SPEED_NORMS_SOURCE,
+        n.blocks_used(),
+        n.cadence_spm.0,
+        n.cadence_spm.1,
+        n.stride_length_m.0,
+        n.stride_length_m.1
+    )?;
+    let p = &c.pelvis_norms;
+    writeln!(
+        out,
+        "# pelvis vertical range: walk {:.2} cm; people at {:.3} m/s ({}; {}): {:.2} +- {:.2} cm (walk {:+.2} SD)",
+        c.pelvis_vertical_range_cm,
+        p.speed_mps,
+        normative::PELVIS_NORMS_SOURCE,
+        p.blocks_used(),
+        p.vertical_range_cm.0,
+        p.vertical_range_cm.1,
+        sd_units(c.pelvis_vertical_range_cm, p.vertical_range_cm)
+    )?;
+    Ok(())
+}
+
 fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -> io::Result<()> {
     writeln!(
         out,
@@ -36,21 +69,7 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
             "# steady part compared: {part} (the pace changed: the plateau with the most whole gait cycles; speed changes, stopping and standing left out)"
         )?;
     }
-    let [(_, cadence), (_, stride), (_, stance)] = c.spatiotemporal;
-    writeln!(out, "# the walk: cadence {cadence:.1} steps/min, stride {stride:.3} m, stance {stance:.1} %")?;
-    let n = &c.spatiotemporal_norms;
-    let (cad_z, stride_z) = (sd_units(cadence, n.cadence_spm), sd_units(stride, n.stride_length_m));
-    writeln!(
-        out,
-        "# norms at {:.3} m/s ({}; {}): cadence {:.1} +- {:.1} steps/min (walk {cad_z:+.2} SD), stride {:.3} +- {:.3} m (walk {stride_z:+.2} SD); no stance norm by speed",
-        n.speed_mps,
-        normative::SPEED_NORMS_SOURCE,
-        n.blocks_used(),
-        n.cadence_spm.0,
-        n.cadence_spm.1,
-        n.stride_length_m.0,
-        n.stride_length_m.1
-    )?;
+    write_figures(out, c)?;
     writeln!(
         out,
         "# deviation = walk - reference; r = Pearson r of the shapes; out1/out2 = share of the cycle beyond mean +- 1/2 SD; rom = range of motion difference; * shape only (means removed)"
@@ -116,6 +135,12 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         line["cadence_norm_sd_spm"] = n.cadence_spm.1.into();
         line["stride_length_norm_m"] = n.stride_length_m.0.into();
         line["stride_length_norm_sd_m"] = n.stride_length_m.1.into();
+        let p = &c.pelvis_norms;
+        line["pelvis_vertical_range_cm"] = c.pelvis_vertical_range_cm.into();
+        line["pelvis_vertical_range_norm_cm"] = p.vertical_range_cm.0.into();
+        line["pelvis_vertical_range_norm_sd_cm"] = p.vertical_range_cm.1.into();
+        line["pelvis_norm_from_block_mps"] = p.from_block_mps.into();
+        line["pelvis_norm_to_block_mps"] = p.to_block_mps.into();
         if let Some(part) = &c.steady_part {
             line["steady_part"] = part.as_str().into();
         }

@@ -455,7 +455,7 @@ pub struct Resolved {
     pub(crate) midstance_drop: f64,
     /// Pelvis ahead of the stance heel at mid-stance (m).
     pub(crate) midstance_offset: f64,
-    /// Share (0 to 1) of the way from the keyed height to the stance leg's reach that the
+    /// Share (0 to 1) of the way from the keyed height to the standing stance leg that the
     /// pelvis rises through single support (`walk::stance_rise`).
     pub(crate) stance_rise: f64,
     /// Forward lean of the trunk (rad).
@@ -507,7 +507,7 @@ impl WalkParams {
     ///   (`speed_laws::midstance_drop_cm`);
     /// - mid-stance offset 15 cm ahead of the heel from 1.0 to 1.3 m/s, 3.3 cm further per m/s
     ///   faster and 5 cm nearer per m/s slower (`speed_laws::midstance_offset_cm`);
-    /// - stance rise all the way to the stance leg's reach up to 0.8 m/s, none from 1.3 m/s
+    /// - stance rise all the way to the standing stance leg up to 0.8 m/s, none from 1.3 m/s
     ///   (`speed_laws::stance_rise`);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
     #[must_use]

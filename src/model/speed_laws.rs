@@ -123,12 +123,12 @@ pub(crate) fn swing_lead(speed_mps: f64) -> f64 {
 /// 16.5 / 19.9° at 0.8 / 1.0 / 1.3 / 1.6 m/s: a slow walker passes over a nearly straight leg,
 /// a fast one flexes it as a spring, which the keyed curve already gives. Against the
 /// speed-matched norms with none / this law (session 17's designs): knee RMS 3.85 -> 2.45° at
-/// 0.8 m/s (the loading peak 14.8° at 19 % -> 9.6° at 10 %), 4.04 -> 2.81° at 1.0 (18.2° at
-/// 16 % -> 14.2° at 9 %), ankle 2.08 -> 1.51 and 2.19 -> 1.53°, hip 3.14 -> 3.06 and 2.68 ->
+/// 0.8 m/s (the loading peak 14.8° at 19 % -> 9.3° at 10 %), 4.04 -> 2.81° at 1.0 (18.2° at
+/// 16 % -> 14.1° at 10 %), ankle 2.08 -> 1.51 and 2.19 -> 1.53°, hip 3.14 -> 3.06 and 2.68 ->
 /// 2.51°; the walked pelvis vertical range 0.52 -> 0.92 cm and 1.05 -> 1.27 cm. The whole lift
-/// at 1.3 and 1.6 m/s (a session 16 prototype lifting to the leg's reach) straightened the
-/// loading knee (3° at 8-24 % against the norms' 15-16°) and took the knee RMS 3.2 -> 4.4 and
-/// 3.4 -> 4.7°.
+/// at 1.3 and 1.6 m/s (`--set pelvis.stance_rise=1`) straightens the loading knee (15.2° at 7 %
+/// and 18.5° at 8 % against the norms' 16.5 and 19.9° at 13 %) and takes the knee RMS 3.21 ->
+/// 4.36 and 4.29 -> 6.31°.
 pub(crate) fn stance_rise(speed_mps: f64) -> f64 {
     ((1.3 - speed_mps) / 0.5).clamp(0.0, 1.0)
 }

@@ -124,6 +124,17 @@ fn spatiotemporal(md: &mut String, c: &Comparison) {
             writeln!(md, "| {name} | {walk:.digits$} | {mean:.digits$} ± {sd:.digits$} | {:+.2} |", (walk - mean) / sd);
     }
     let _ = writeln!(md, "| stance (%) | {stance:.1} | no norm by speed | |");
+    let p = &c.pelvis_norms;
+    let (mean, sd) = p.vertical_range_cm;
+    let walk = c.pelvis_vertical_range_cm;
+    let _ =
+        writeln!(md, "| pelvis vertical range (cm)¹ | {walk:.2} | {mean:.2} ± {sd:.2} | {:+.2} |", (walk - mean) / sd);
+    let _ = writeln!(
+        md,
+        "\n¹ Against {} ({}): the centre of the four pelvis markers, per step.",
+        normative::PELVIS_NORMS_SOURCE,
+        p.blocks_used()
+    );
 }
 
 fn row(md: &mut String, k: &CurveComparison) {

@@ -26,7 +26,7 @@ pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 
 /// Share of the stance leg's reach limit from which the heel-rise phase eases the leg toward
 /// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 3.2° limit).
-const REACH_EASE: f64 = 0.995;
+pub(crate) const REACH_EASE: f64 = 0.995;
 
 /// How far inside full reach (m) a stance leg past it is brought by rolling its foot: the
 /// IK's own tolerance is 1e-9 m.

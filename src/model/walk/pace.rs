@@ -63,7 +63,8 @@ impl Walker {
             .swing
             .as_ref()
             .is_some_and(|plan| super::stance_rise::on_level_ground(&[leaving, plan.to, *other]));
-        self.legs[i].stance_rise = if level { self.gait.r.stance_rise } else { 0.0 };
+        let share = super::stance_rise::share_for_heel_rise(self.legs[i].heel_rise);
+        self.legs[i].stance_rise = if level { share * self.gait.r.stance_rise } else { 0.0 };
         self.gait.r.toe_off = walk_toe_off;
     }
 

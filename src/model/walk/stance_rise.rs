@@ -13,13 +13,16 @@
 //! on level ground. Around the heel rise the lift fades out ([`RISE_OUT_AROUND_HEEL_RISE`]).
 //!
 //! The planning (reach guard, optimiser, swing planner) keeps to the keyed curve, which the
-//! lift only ever raises toward a reach the stance leg has by construction; a swinging leg's
-//! target caps it, so the lift never takes the other leg out of reach.
+//! lift only ever raises toward a reach the stance leg has by construction; the other leg,
+//! swinging or still on its toes, caps it at the reach it has under the keyed pelvis, so the
+//! lift never takes that leg further. A walk's first stances (set up, not planned) are not
+//! lifted.
 
 use crate::model::params::Resolved;
 use crate::model::walk::Walker;
-use crate::model::walk::leg::{Footfall, LegPhase};
-use crate::model::walk::pelvis::PelvisPose;
+use crate::model::walk::gait::REACH_EASE;
+use crate::model::walk::leg::{Footfall, LegState};
+use crate::model::walk::pelvis::{PelvisPose, smoothstep};
 use glam::DVec3;
 
 /// How far apart in height (m) the footfalls around a stance may be for it to be lifted.
@@ -31,12 +34,26 @@ const LEVEL_TOLERANCE_RAD: f64 = 0.0175;
 /// Whether a stance on these footfalls (the one the leg leaves, the one it lands on, the
 /// other leg's) is on level ground, the only ground the lift is made on: on stairs a lifted
 /// hip tipped the swinging foot's toe into a nosing (86 mm under it at 0.5 m/s on 22 cm
-/// rises) and took a rolling foot out of reach (37 reach failures); on stairs, slopes and
-/// rough ground the keyed curve's terrain rules [fig 6.14] keep the height.
+/// rises) and took a rolling foot out of reach (37 reach failures); on stairs, slopes, and rough
+/// ground whose footfalls differ by more than 1 cm, the keyed curve's terrain rules [fig 6.14]
+/// keep the height.
 pub(crate) fn on_level_ground(footfalls: &[Footfall]) -> bool {
     let (low, high) =
         footfalls.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), f| (lo.min(f.heel.y), hi.max(f.heel.y)));
     high - low <= LEVEL_TOLERANCE_M && footfalls.iter().all(|f| f.ground_angle.abs() <= LEVEL_TOLERANCE_RAD)
+}
+
+/// How much of `pelvis.stance_rise` a stance whose heel rises at `heel_rise` (cycle phase)
+/// takes: all of it for a heel rise from 0.26 to 0.33 of the cycle (the speed law's 0.265 to
+/// 0.31), none before 0.20 or after 0.40, eased between. A late heel rise keeps the trailing
+/// foot flat into the next loading response and then rolls it fast: the lift, held down by
+/// that foot's reach, caught up within a frame as it rolled (the pelvis's largest vertical
+/// acceleration at 0.8 m/s 3.0 / 5.3 / 7.5 / 12 / 22 m/s² for a heel rise at 0.33 / 0.35 /
+/// 0.37 / 0.40 / 0.45, against 0.5-1.5 with no lift); an early one leaves the lift a bump
+/// between its ramps (6.7 m/s² at 0.15, 3.1 at 0.20).
+#[must_use]
+pub(crate) fn share_for_heel_rise(heel_rise: f64) -> f64 {
+    ease(heel_rise, 0.20, 0.26) * (1.0 - ease(heel_rise, 0.33, 0.40))
 }
 
 /// The lift's ramp in, in the stance leg's cycle phase after its heel strike: none before
@@ -48,7 +65,7 @@ const RISE_IN: (f64, f64) = (0.04, 0.16);
 
 /// The lift's ramp out, in cycle phase either side of the leg's heel rise: all of it up to
 /// 0.06 before, none from 0.06 after. At 0.8 m/s, knee RMS against the norms and the pelvis's
-/// largest vertical acceleration: this 2.45°, 2.36 m/s² (the keyed walk's own largest at 1.3
+/// largest vertical acceleration: this 2.45°, about 2.4 m/s² (the keyed walk's own largest at 1.3
 /// m/s is 2.64); out over the 0.10 before the heel rise 2.55°, the pelvis falling 5 mm back to
 /// the keyed curve with the foot still flat and the knee flexing and straightening again by
 /// 5.6° between 22 and 32 % of the cycle; out over the 0.02 before it 2.46°, 4.47 m/s²; over the
@@ -59,32 +76,66 @@ const RISE_OUT_AROUND_HEEL_RISE: (f64, f64) = (0.06, 0.06);
 /// the cycle), easing to 4° at the heel rise, as people's knee straightens through mid-stance
 /// (the norms at 0.8 m/s: 7.3° at 16 %, 4.2° at 34 %). Lifted to the leg's reach margin (3°
 /// throughout) the knee stood flat at 3.2° from 16 to 28 % of the cycle; with this, at 0.8 /
-/// 1.0 m/s the knee RMS is 2.46 / 2.81° (3.2° flat: 2.70 / 2.71), hip 3.06 / 2.51, ankle 1.51 /
+/// 1.0 m/s the knee RMS is 2.46 / 2.81° (3.2° flat: 2.70 / 2.81), hip 3.06 / 2.51, ankle 1.51 /
 /// 1.52, and the knee is within 0.6° of the norms' mean from 14 to 28 %.
 const MIDSTANCE_KNEE_DEG: (f64, f64) = (7.0, 4.0);
 
-fn smoothstep(s: f64) -> f64 {
-    let s = s.clamp(0.0, 1.0);
-    s * s * (3.0 - 2.0 * s)
+/// [`smoothstep`] of `(x - from) / (to - from)` held at 0 before `from` and 1 after `to`.
+fn ease(x: f64, from: f64, to: f64) -> f64 {
+    if x <= from {
+        0.0
+    } else if x >= to {
+        1.0
+    } else {
+        smoothstep((x - from) / (to - from))
+    }
 }
+
+/// The latest the lift may last, in the stance leg's cycle phase: before the other leg's heel
+/// strike at 0.5, so that a late heel rise (`legs.heel_rise` up to 0.45) never carries the lift
+/// into double support, where the landing leg's reach sets the height (at 0.45 the pelvis took
+/// a 12.5 m/s² corner there).
+const RISE_ENDS_BY: f64 = 0.48;
 
 /// How much of the lift is in force at the stance leg's cycle phase `q`, 0 to 1, for a leg
 /// whose heel rises at `heel_rise`.
 fn window(q: f64, heel_rise: f64) -> f64 {
-    let rise_in = smoothstep((q - RISE_IN.0) / (RISE_IN.1 - RISE_IN.0));
-    let (out_from, out_to) = (heel_rise - RISE_OUT_AROUND_HEEL_RISE.0, heel_rise + RISE_OUT_AROUND_HEEL_RISE.1);
-    let rise_out = 1.0 - smoothstep((q - out_from) / (out_to - out_from));
-    rise_in.min(rise_out)
+    let out_to = (heel_rise + RISE_OUT_AROUND_HEEL_RISE.1).min(RISE_ENDS_BY);
+    let out_from = out_to - RISE_OUT_AROUND_HEEL_RISE.0 - RISE_OUT_AROUND_HEEL_RISE.1;
+    ease(q, RISE_IN.0, RISE_IN.1).min(1.0 - ease(q, out_from, out_to))
 }
 
 /// The hip-to-ankle distance (m) of a stance leg standing with the knee [`MIDSTANCE_KNEE_DEG`]
 /// gives at its cycle phase `q`, for a leg whose heel rises at `heel_rise`.
 fn standing_distance(r: &Resolved, q: f64, heel_rise: f64) -> f64 {
-    let u = smoothstep((q - RISE_IN.1) / (heel_rise - RISE_IN.1));
+    // A heel rise at or before the lift's full start (`legs.heel_rise` may be 0.15) straightens
+    // the knee at once.
+    let u = if heel_rise > RISE_IN.1 { ease(q, RISE_IN.1, heel_rise) } else { 1.0 };
     let (from, to) = MIDSTANCE_KNEE_DEG;
     let knee = (from + (to - from) * u).to_radians();
     let (thigh, shank) = (r.dims.thigh, r.dims.shank);
     (thigh * thigh + shank * shank + 2.0 * thigh * shank * knee.cos()).sqrt()
+}
+
+/// How wide (m) the lift's bends are where a cap takes over: the hard `min` and `max` turned
+/// the pelvis at a corner as a trailing foot's cap rose through the keyed height (a heel rise
+/// at 0.4 of the cycle: 13.4 m/s² for a frame at 0.8 m/s, 0.6 with the lift off).
+const CAP_BEND_M: f64 = 0.0005;
+
+/// `max(x, 0)` with its corner rounded over [`CAP_BEND_M`]: ln(1 + eˣ) scaled (0.35 mm at 0).
+fn soft_positive(x: f64) -> f64 {
+    let u = x / CAP_BEND_M;
+    if u > 30.0 { x } else { CAP_BEND_M * u.exp().ln_1p() }
+}
+
+/// The smaller of two lifts (≥ 0) with the corner rounded: (a⁻⁴ + b⁻⁴)^(−1/4), which is the
+/// smaller within 1 % once the other is twice it, 0.84 of either where they are equal, and 0
+/// where either is.
+fn soft_min(a: f64, b: f64) -> f64 {
+    if a <= 0.0 || b <= 0.0 {
+        return 0.0;
+    }
+    (a.powi(-4) + b.powi(-4)).powf(-0.25)
 }
 
 /// The pelvis height at which the hip on `side_sign` is `distance` from `ankle`, the
@@ -112,8 +163,15 @@ impl Walker {
         let limit = r.reach_margin * r.dims.leg_reach();
         let keyed = pose.position.y;
         let mut lifted: Option<f64> = None;
-        for leg in self.legs.iter().filter(|leg| leg.phase.is_stance()) {
-            let weight = walking * leg.stance_rise * window(phase - leg.cycle_start, leg.heel_rise);
+        let weight_of = |leg: &LegState| {
+            if leg.phase.is_stance() {
+                walking * leg.stance_rise * window(phase - leg.cycle_start, leg.heel_rise)
+            } else {
+                0.0
+            }
+        };
+        for leg in &self.legs {
+            let weight = weight_of(leg);
             if weight <= 0.0 {
                 continue;
             }
@@ -124,14 +182,21 @@ impl Walker {
             let y = keyed + weight * (reached - keyed).max(0.0);
             lifted = Some(lifted.map_or(y, |other: f64| other.min(y)));
         }
-        let Some(mut y) = lifted else { return pose };
-        for leg in self.legs.iter().filter(|leg| leg.phase == LegPhase::Swing) {
+        let Some(y) = lifted else { return pose };
+        let mut lift = y - keyed;
+        // Every other leg, swinging or still on its toes in double support, keeps to the reach
+        // it has under the keyed pelvis: the lift never takes it further (a trailing foot in
+        // double support was pulled off the ground on a stair).
+        for leg in self.legs.iter().filter(|leg| weight_of(leg) <= 0.0) {
             let target = self.gait.target_of(leg, phase, pose.hip(leg.side.sign()));
-            if let Some(cap) = height_for_reach(&pose, leg.side.sign(), target.ankle, limit) {
-                y = y.min(cap.max(keyed));
-            }
+            // A foot on its toes rolls further from REACH_EASE of the reach on: kept inside it,
+            // and so is the same leg once it swings, or the cap would jump at its toe-off.
+            // A foot already further across than that (a late heel rise) allows no lift at all.
+            let room = height_for_reach(&pose, leg.side.sign(), target.ankle, REACH_EASE * limit)
+                .map_or(0.0, |cap| soft_positive(cap - keyed));
+            lift = soft_min(lift, room);
         }
-        pose.position.y = y;
+        pose.position.y = keyed + lift;
         pose
     }
 }

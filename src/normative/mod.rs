@@ -14,7 +14,15 @@
 //!
 //! The walk's cadence and stride are set beside norms for its own speed
 //! (`data/normative/spatiotemporal_by_speed.csv`, the same dataset's treadmill trials at 40–115 %
-//! of comfortable speed), interpolated the same way.
+//! of comfortable speed), interpolated the same way, and its pelvis's vertical range beside the
+//! same adults' measured one ([`pelvis`]).
+
+mod blocks;
+mod pelvis;
+
+use blocks::{blocks_used, bracket};
+
+pub use pelvis::{PELVIS_NORMS_SOURCE, PelvisAtSpeed, PelvisNorms};
 
 use crate::analysis::Run;
 use crate::error::{Error, Result};
@@ -28,7 +36,7 @@ use std::path::Path;
 pub const BUILT_IN_SOURCE: &str = "Fukuchi, Fukuchi & Duarte 2018 (young adults, treadmill, by speed, CC BY 4.0)";
 
 /// The built-in references' text: five speed blocks, 0.80 to 1.80 m/s.
-pub const BUILT_IN: &str = include_str!("../data/normative/joint_angles_by_speed.csv");
+pub const BUILT_IN: &str = include_str!("../../data/normative/joint_angles_by_speed.csv");
 
 /// How the built-in spatiotemporal norms are named.
 pub const SPEED_NORMS_SOURCE: &str =
@@ -36,7 +44,7 @@ pub const SPEED_NORMS_SOURCE: &str =
 
 /// The built-in spatiotemporal norms by speed: `data/normative/spatiotemporal_by_speed.csv`
 /// (source, licence and derivation beside it).
-pub const BUILT_IN_SPEED_NORMS: &str = include_str!("../data/normative/spatiotemporal_by_speed.csv");
+pub const BUILT_IN_SPEED_NORMS: &str = include_str!("../../data/normative/spatiotemporal_by_speed.csv");
 
 /// Said beside the comparison of a walk off level ground.
 pub const OFF_LEVEL_NOTE: &str = "the walk is not on level ground and the norms are level treadmill walking: the differences include what the terrain asks of the legs";
@@ -183,35 +191,6 @@ impl References {
             blocks_mps: (a.speed_mps, b.speed_mps),
             curves,
         }
-    }
-}
-
-/// Of `speeds` (rising), the two blocks around `speed_mps` and how far between them it is
-/// (0 at the first): the end block twice beyond either end or for NaN.
-fn bracket(speeds: &[f64], speed_mps: f64) -> (usize, usize, f64) {
-    let last = speeds.len() - 1;
-    if speed_mps.is_nan() || speed_mps <= speeds[0] {
-        return (0, 0, 0.0);
-    }
-    if speed_mps >= speeds[last] {
-        return (last, last, 0.0);
-    }
-    let i = speeds.windows(2).position(|w| speed_mps < w[1]).unwrap_or(0);
-    (i, i + 1, (speed_mps - speeds[i]) / (speeds[i + 1] - speeds[i]))
-}
-
-/// Which blocks (`from`, `to` m/s) a norm at `speed_mps` came from, in words: "the 1.232 m/s
-/// block", "interpolated between the 1.232 and 1.417 m/s blocks", or "the 1.417 m/s block,
-/// the fastest (the walk is faster; not extrapolated)".
-fn blocks_used(speed_mps: f64, (from, to): (f64, f64)) -> String {
-    if from < to {
-        format!("interpolated between the {from:.3} and {to:.3} m/s blocks")
-    } else if speed_mps > to + 1e-9 {
-        format!("the {to:.3} m/s block, the fastest (the walk is faster; not extrapolated)")
-    } else if speed_mps < from - 1e-9 {
-        format!("the {from:.3} m/s block, the slowest (the walk is slower; not extrapolated)")
-    } else {
-        format!("the {from:.3} m/s block")
     }
 }
 
@@ -373,6 +352,11 @@ pub struct Comparison {
     /// Cadence and stride norms at the walk's speed (the built-in table by speed; no stance
     /// norm by speed is available).
     pub spatiotemporal_norms: NormsAtSpeed,
+    /// The walk's pelvis vertical range (cm, the report's `pelvis_vertical_range_cm`), set
+    /// beside `pelvis_norms`.
+    pub pelvis_vertical_range_cm: f64,
+    /// People's pelvis vertical range at the walk's speed.
+    pub pelvis_norms: PelvisAtSpeed,
     /// The walk was on level ground, as the norms' treadmill walking was; false on stairs,
     /// slopes and rough ground, where the differences include what the terrain asks.
     pub level_ground: bool,
@@ -473,6 +457,8 @@ pub fn compare_measured(walk: &measure::Snapshot, references: &References) -> Co
     ];
     let spatiotemporal_norms = SpeedNorms::built_in().at(speed_mps);
     Comparison {
+        pelvis_vertical_range_cm: figure("pelvis_vertical_range_cm"),
+        pelvis_norms: PelvisNorms::built_in().at(speed_mps),
         speed_mps,
         reference_speed_mps: reference.speed_mps,
         reference_blocks_mps: reference.blocks_mps,
@@ -592,5 +578,5 @@ mod tests {
     }
 
     /// The comfortable-speed reference (T05 only), which a user can pass with `--reference`.
-    const COMFORTABLE: &str = include_str!("../data/normative/normative_adult_walking.csv");
+    const COMFORTABLE: &str = include_str!("../../data/normative/normative_adult_walking.csv");
 }
