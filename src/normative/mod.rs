@@ -15,7 +15,7 @@
 //! The walk's cadence and stride are set beside norms for its own speed
 //! (`data/normative/spatiotemporal_by_speed.csv`, the same dataset's treadmill trials at 40–115 %
 //! of comfortable speed), interpolated the same way, and its pelvis's vertical range beside the
-//! same adults' measured one ([`pelvis`]).
+//! same adults' measured one ([`PelvisNorms`]).
 
 mod blocks;
 mod pelvis;
