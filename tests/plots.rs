@@ -111,6 +111,11 @@ fn cycle_charts_keep_their_last_label_inside_and_no_legend_covers_a_lone_curve()
     let pelvis = std::fs::read_to_string(dir.join("plots/pelvis.svg")).unwrap();
     let doc = roxmltree::Document::parse(&pelvis).unwrap();
     assert!(!doc.descendants().any(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.trim() == "default")));
+    // The vertical panel's grey band is people's measured range at the walk's speed, named
+    // with its height (data/normative/pelvis_vertical_by_speed.csv read at 1.30 m/s).
+    let people = gaitlab::normative::PelvisNorms::built_in().at(1.3).vertical_range_cm.0;
+    let name = format!("adults' range, {people:.1} cm at 1.30 m/s");
+    assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == name), "no '{name}' in pelvis.svg");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -148,8 +153,10 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
 }
 
 /// The pelvis plot draws measured adults' mean +- 1 SD (grey) behind the walk's tilt,
-/// obliquity and rotation, and no band under displacement and velocity (the reference has
-/// none); the tilt band is a shape about the walk's mean, and the legend says so.
+/// obliquity and rotation, their measured vertical range (a band that tall about the walk's
+/// mean height) behind its vertical displacement, and no band under the lateral displacement
+/// and velocity (no reference has them); the tilt band is a shape about the walk's mean, and
+/// the legend says so.
 #[test]
 fn the_pelvis_plot_draws_measured_adult_gait_behind_the_angles() {
     let dir = std::env::temp_dir().join(format!("gaitlab-plots-pelvis-norm-{}", std::process::id()));
@@ -161,7 +168,7 @@ fn the_pelvis_plot_draws_measured_adult_gait_behind_the_angles() {
         doc.descendants().filter(|n| n.has_tag_name("polygon") || n.has_tag_name("polyline")).collect();
     let grey = |n: &roxmltree::Node<'_, '_>| n.attribute("fill") == Some("#787878");
     let bands: Vec<usize> = shapes.iter().enumerate().filter(|(_, n)| grey(n)).map(|(i, _)| i).collect();
-    assert_eq!(bands.len(), 3, "a grey band in the tilt, obliquity and rotation panels");
+    assert_eq!(bands.len(), 4, "a grey band in the tilt, obliquity, rotation and vertical panels");
     // The panel of a shape (column, row), from its points; the walk (red, band and line)
     // comes after the grey band of its panel, so it is drawn over it.
     let panel = |n: &roxmltree::Node<'_, '_>| {
@@ -185,7 +192,7 @@ fn the_pelvis_plot_draws_measured_adult_gait_behind_the_angles() {
         assert!(!walk.is_empty() && walk.iter().all(|&k| k > i), "panel {at:?}: the walk is drawn under the band");
     }
     panels.sort_unstable();
-    assert_eq!(panels, [(0, 0), (1, 0), (2, 0)], "bands in the top row only (tilt, obliquity, rotation)");
+    assert_eq!(panels, [(0, 0), (0, 1), (1, 0), (2, 0)], "bands in the angles' panels and the vertical's");
     let texts: Vec<&str> = doc.descendants().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
     assert_eq!(
         texts.iter().filter(|t| t.contains("Fukuchi 2018")).count(),

@@ -7,7 +7,7 @@ use super::common::{
 };
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
-use crate::normative::{Reference, References};
+use crate::normative::{PelvisNorms, Reference, References};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -135,11 +135,19 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     // bands are drawn as they stand. The reference's tilt carries a ~10° offset from its
     // marker model and the walk's tilt is a swing about its posture: a shape band, moved
     // onto the report's own walk's mean.
+    // People's pelvis is measured as a range, not a curve: drawn as a band that tall about the
+    // walk's mean height, so the walk's shortfall shows at a glance.
+    let people = PelvisNorms::built_in().at(walks[0].1.speed_mps());
     let norms = [
         normative_cycle(&reference, "pelvis_tilt_ant", Some(mean_of(&cycles[0][0]))),
         normative_cycle(&reference, "pelvis_obliq_up", None),
         normative_cycle(&reference, "pelvis_rot_fwd", None),
+        Some(range_band(mean_of(&cycles[0][3]), people.vertical_range_cm.0)),
     ];
+    let range_name = format!(
+        "adults' range, {:.1} cm at {:.2} m/s\n(WBDS pelvis markers)",
+        people.vertical_range_cm.0, people.speed_mps
+    );
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
         let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
             .iter()
@@ -151,7 +159,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
                 (name, PALETTE[k % PALETTE.len()], &cycles[k][p])
             })
             .collect();
-        let band_name = norm_name(&reference, p == 0);
+        let band_name = if p == 3 { range_name.clone() } else { norm_name(&reference, p == 0) };
         if let Some(norm) = norms.get(p).and_then(Option::as_ref) {
             lines.insert(0, (band_name.as_str(), NORM, norm));
         }
@@ -179,6 +187,12 @@ fn speed_matched(walk: &Data<'_>) -> Reference {
 /// The mean of a cycle's mean curve over its points.
 fn mean_of(c: &Cycle) -> f64 {
     c.mean.iter().map(|p| p.1).sum::<f64>() / c.mean.len().max(1) as f64
+}
+
+/// A band `range` tall centred on `level` over the whole cycle, with its middle as the line.
+fn range_band(level: f64, range: f64) -> Cycle {
+    let (lo, hi) = (level - 0.5 * range, level + 0.5 * range);
+    Cycle { mean: vec![(0.0, level), (100.0, level)], band: vec![(0.0, lo), (100.0, lo), (100.0, hi), (0.0, hi)] }
 }
 
 /// `reference`'s curve `stem`: its mean and a mean +- 1 SD band over 0-100 % of the cycle;
