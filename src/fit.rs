@@ -386,6 +386,25 @@ mod tests {
     }
 
     #[test]
+    fn the_calibration_s_start_is_the_default_s_keys_and_undoes_a_config_s_own() {
+        // The default config keeps the calibration: its third start would repeat the second.
+        let p = crate::config::presets::params("default").unwrap().unwrap();
+        let (r, bounds) = (p.resolve(), ranges(&p));
+        let own: Vec<f64> = FIT_KEYS.iter().zip(&bounds).map(|(k, &range)| share(range, (k.start)(&p, &r))).collect();
+        assert_eq!(laws_start(&p, &bounds), own);
+        // A config with its own keys: the calibration's start puts back what the default has,
+        // those keys alone.
+        let mut bad = p.clone();
+        for (key, value) in [("pelvis.midstance_offset_cm", 24.0), ("legs.knee_lift_cm", 7.0)] {
+            (schema::spec(key).unwrap().set)(&mut bad, &Value::Real(value));
+        }
+        let laws = laws_start(&bad, &ranges(&bad));
+        for ((k, a), b) in FIT_KEYS.iter().zip(&laws).zip(&own) {
+            assert!((a - b).abs() < 1e-12, "{}: {a} against the default's {b}", k.key);
+        }
+    }
+
+    #[test]
     fn each_keys_start_is_its_value_in_force_so_setting_it_changes_nothing() {
         // A start read from a resolved value the key is only one factor of (the obliquity
         // range is the key times the sway knob) would be written back scaled: wide_sway.toml

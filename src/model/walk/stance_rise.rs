@@ -1,4 +1,4 @@
-//! The pelvis rising over a straight stance leg through single support.
+//! The pelvis rising over the stance leg through single support.
 //!
 //! The keyed height curve peaks at the forward mid-stance key, 12-16 cm ahead of the stance
 //! heel (where the late-stance knee wants it, `speed_laws::midstance_offset_cm`), but a
@@ -14,9 +14,10 @@
 //!
 //! The planning (reach guard, optimiser, swing planner) keeps to the keyed curve, which the
 //! lift only ever raises toward a reach the stance leg has by construction; the other leg,
-//! swinging or still on its toes, caps it at the reach it has under the keyed pelvis, so the
-//! lift never takes that leg further. A walk's first stances (set up, not planned) are not
-//! lifted.
+//! swinging or still on its toes, caps it at `REACH_EASE` of its reach from where its target
+//! is under the keyed pelvis (the cap's corner rounded over half a millimetre), so the lift
+//! never rolls that foot further or takes it out of reach. A walk's first stances (set up,
+//! not planned) are not lifted.
 
 use crate::model::params::Resolved;
 use crate::model::walk::Walker;
@@ -117,9 +118,10 @@ fn standing_distance(r: &Resolved, q: f64, heel_rise: f64) -> f64 {
     (thigh * thigh + shank * shank + 2.0 * thigh * shank * knee.cos()).sqrt()
 }
 
-/// How wide (m) the lift's bends are where a cap takes over: the hard `min` and `max` turned
-/// the pelvis at a corner as a trailing foot's cap rose through the keyed height (a heel rise
-/// at 0.4 of the cycle: 13.4 m/s² for a frame at 0.8 m/s, 0.6 with the lift off).
+/// How wide (m) the lift's bends are where a cap takes over: with a hard `min` and `max` the
+/// pelvis turned a corner as a trailing foot's cap rose through the keyed height (the largest
+/// vertical acceleration at 0.8 m/s for a heel rise at 0.35 / 0.37 of the cycle 5.5 / 3.6
+/// m/s², rounded 4.3 / 2.8; at the default heel rise the cap never binds).
 const CAP_BEND_M: f64 = 0.0005;
 
 /// `max(x, 0)` with its corner rounded over [`CAP_BEND_M`]: ln(1 + eˣ) scaled (0.35 mm at 0).
@@ -150,7 +152,7 @@ fn height_for_reach(pose: &PelvisPose, side_sign: f64, ankle: DVec3, distance: f
 
 impl Walker {
     /// The pelvis the walk is drawn with at `phase`: the keyed pelvis, lifted toward the
-    /// stance leg's reach through single support (module docs).
+    /// standing stance leg through single support (module docs).
     pub(crate) fn pelvis_walked(&self, phase: f64) -> PelvisPose {
         let mut pose = self.pelvis_at(phase);
         // Setting off and settling blend the sway and rotations in and out; the lift too, so
