@@ -20,7 +20,7 @@
 mod blocks;
 mod pelvis;
 
-use blocks::{blocks_used, bracket};
+use blocks::{blocks_used, bracket, parse_rows};
 
 pub use pelvis::{PELVIS_NORMS_SOURCE, PelvisAtSpeed, PelvisNorms};
 
@@ -237,33 +237,11 @@ impl SpeedNorms {
 
     /// Parses the built-in file's format: `#` comments, a header, one row a speed block.
     pub fn parse(text: &str, label: &str) -> Result<SpeedNorms> {
-        let bad = |line: usize, message: String| Error::Usage(format!("{label}:{line}: {message}"));
-        let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'));
-        let (header_line, header) = rows.next().ok_or_else(|| bad(1, "no header".into()))?;
-        let columns: Vec<&str> = header.split(',').map(str::trim).collect();
-        let column = |name: &str| {
-            columns.iter().position(|c| *c == name).ok_or_else(|| bad(header_line + 1, format!("no column `{name}`")))
-        };
         let wanted = ["speed_m_s", "cadence_mean_spm", "cadence_sd_spm", "stride_length_mean_m", "stride_length_sd_m"];
-        let at: Vec<usize> = wanted.iter().map(|w| column(w)).collect::<Result<_>>()?;
-        let mut blocks: Vec<SpeedBlock> = Vec::new();
-        for (n, line) in rows {
-            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-            let value =
-                |i: usize| cells.get(i).and_then(|c| c.parse::<f64>().ok()).filter(|v| v.is_finite() && *v > 0.0);
-            let v: Vec<f64> = at
-                .iter()
-                .map(|&i| value(i))
-                .collect::<Option<_>>()
-                .ok_or_else(|| bad(n + 1, format!("expected positive numbers in {}", wanted.join(", "))))?;
-            if blocks.last().is_some_and(|b| b.speed_mps >= v[0]) {
-                return Err(bad(n + 1, "speeds must rise from row to row".into()));
-            }
-            blocks.push(SpeedBlock { speed_mps: v[0], cadence_spm: (v[1], v[2]), stride_length_m: (v[3], v[4]) });
-        }
-        if blocks.len() < 2 {
-            return Err(bad(header_line + 1, format!("{} speed blocks; expected at least 2", blocks.len())));
-        }
+        let blocks = parse_rows(text, label, &wanted)?
+            .into_iter()
+            .map(|v| SpeedBlock { speed_mps: v[0], cadence_spm: (v[1], v[2]), stride_length_m: (v[3], v[4]) })
+            .collect();
         Ok(SpeedNorms { blocks })
     }
 

@@ -7,8 +7,8 @@
 //! from other people and another marker model, and the walk's pelvis is a pelvis. These are the
 //! same adults whose joint angles the walk is compared with.
 
-use super::blocks::{blocks_used, bracket};
-use crate::error::{Error, Result};
+use super::blocks::{blocks_used, bracket, parse_rows};
+use crate::error::Result;
 
 /// How the built-in pelvis norms are named.
 pub const PELVIS_NORMS_SOURCE: &str =
@@ -55,35 +55,11 @@ impl PelvisNorms {
 
     /// Parses the built-in file's format: `#` comments, a header, one row a speed block.
     pub fn parse(text: &str, label: &str) -> Result<PelvisNorms> {
-        let bad = |line: usize, message: String| Error::Usage(format!("{label}:{line}: {message}"));
-        let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'));
-        let (header_line, header) = rows.next().ok_or_else(|| bad(1, "no header".into()))?;
-        let columns: Vec<&str> = header.split(',').map(str::trim).collect();
         let wanted = ["speed_m_s", "vertical_range_mean_cm", "vertical_range_sd_cm"];
-        let at: Vec<usize> = wanted
-            .iter()
-            .map(|w| {
-                columns.iter().position(|c| c == w).ok_or_else(|| bad(header_line + 1, format!("no column `{w}`")))
-            })
-            .collect::<Result<_>>()?;
-        let mut blocks: Vec<PelvisBlock> = Vec::new();
-        for (n, line) in rows {
-            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-            let value =
-                |i: usize| cells.get(i).and_then(|c| c.parse::<f64>().ok()).filter(|v| v.is_finite() && *v > 0.0);
-            let v: Vec<f64> = at
-                .iter()
-                .map(|&i| value(i))
-                .collect::<Option<_>>()
-                .ok_or_else(|| bad(n + 1, format!("expected positive numbers in {}", wanted.join(", "))))?;
-            if blocks.last().is_some_and(|b| b.speed_mps >= v[0]) {
-                return Err(bad(n + 1, "speeds must rise from row to row".into()));
-            }
-            blocks.push(PelvisBlock { speed_mps: v[0], vertical_range_cm: (v[1], v[2]) });
-        }
-        if blocks.len() < 2 {
-            return Err(bad(header_line + 1, format!("{} speed blocks; expected at least 2", blocks.len())));
-        }
+        let blocks = parse_rows(text, label, &wanted)?
+            .into_iter()
+            .map(|v| PelvisBlock { speed_mps: v[0], vertical_range_cm: (v[1], v[2]) })
+            .collect();
         Ok(PelvisNorms { blocks })
     }
 
