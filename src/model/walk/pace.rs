@@ -65,6 +65,7 @@ impl Walker {
             .is_some_and(|plan| super::stance_rise::on_level_ground(&[leaving, plan.to, *other]));
         let share = super::stance_rise::share_for_heel_rise(self.legs[i].heel_rise);
         self.legs[i].stance_rise = if level { share * self.gait.r.stance_rise } else { 0.0 };
+        self.legs[i].stance_reach = self.gait.r.reach_margin * self.gait.r.dims.leg_reach();
         self.gait.r.toe_off = walk_toe_off;
     }
 

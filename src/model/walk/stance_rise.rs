@@ -162,7 +162,6 @@ impl Walker {
             return pose;
         }
         let r = &self.gait.r;
-        let limit = r.reach_margin * r.dims.leg_reach();
         let keyed = pose.position.y;
         let mut lifted: Option<f64> = None;
         let weight_of = |leg: &LegState| {
@@ -178,7 +177,7 @@ impl Walker {
                 continue;
             }
             let ankle = self.gait.target_of(leg, phase, pose.hip(leg.side.sign())).ankle;
-            let distance = standing_distance(r, phase - leg.cycle_start, leg.heel_rise).min(limit);
+            let distance = standing_distance(r, phase - leg.cycle_start, leg.heel_rise).min(leg.stance_reach);
             let Some(reached) = height_for_reach(&pose, leg.side.sign(), ankle, distance) else { continue };
             // Never below the keyed curve: the lift is only ever a rise.
             let y = keyed + weight * (reached - keyed).max(0.0);
@@ -194,7 +193,7 @@ impl Walker {
             // A foot on its toes rolls further from REACH_EASE of the reach on: kept inside it,
             // and so is the same leg once it swings, or the cap would jump at its toe-off.
             // A foot already further across than that (a late heel rise) allows no lift at all.
-            let room = height_for_reach(&pose, leg.side.sign(), target.ankle, REACH_EASE * limit)
+            let room = height_for_reach(&pose, leg.side.sign(), target.ankle, REACH_EASE * leg.stance_reach)
                 .map_or(0.0, |cap| soft_positive(cap - keyed));
             lift = soft_min(lift, room);
         }
