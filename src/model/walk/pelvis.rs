@@ -246,7 +246,7 @@ impl PhaseWindow {
 }
 
 /// 3s² − 2s³: from 0 to 1 over `s` in 0..1 with zero slope at both ends.
-pub(super) fn smoothstep(s: f64) -> f64 {
+fn smoothstep(s: f64) -> f64 {
     s * s * (3.0 - 2.0 * s)
 }
 

@@ -23,7 +23,7 @@ use crate::model::params::Resolved;
 use crate::model::walk::Walker;
 use crate::model::walk::gait::REACH_EASE;
 use crate::model::walk::leg::{Footfall, LegState};
-use crate::model::walk::pelvis::{PelvisPose, smoothstep};
+use crate::model::walk::pelvis::{PelvisPose, PhaseWindow};
 use glam::DVec3;
 
 /// How far apart in height (m) the footfalls around a stance may be for it to be lifted.
@@ -81,28 +81,15 @@ const RISE_OUT_AROUND_HEEL_RISE: (f64, f64) = (0.06, 0.06);
 /// 1.52, and the knee is within 0.6° of the norms' mean from 14 to 28 %.
 const MIDSTANCE_KNEE_DEG: (f64, f64) = (7.0, 4.0);
 
-/// [`smoothstep`] of `(x - from) / (to - from)` held at 0 before `from` and 1 after `to`.
+/// The smoothstep from 0 at `from` to 1 at `to` of `x` (the pelvis's blend windows' weight).
 fn ease(x: f64, from: f64, to: f64) -> f64 {
-    if x <= from {
-        0.0
-    } else if x >= to {
-        1.0
-    } else {
-        smoothstep((x - from) / (to - from))
-    }
+    PhaseWindow { from_phase: from, span: to - from }.weight(x)
 }
-
-/// The latest the lift may last, in the stance leg's cycle phase: before the other leg's heel
-/// strike at 0.5, so that a late heel rise (`legs.heel_rise` up to 0.45) never carries the lift
-/// into double support, where the landing leg's reach sets the height (at 0.45 the pelvis took
-/// a 12.5 m/s² corner there).
-const RISE_ENDS_BY: f64 = 0.48;
 
 /// How much of the lift is in force at the stance leg's cycle phase `q`, 0 to 1, for a leg
 /// whose heel rises at `heel_rise`.
 fn window(q: f64, heel_rise: f64) -> f64 {
-    let out_to = (heel_rise + RISE_OUT_AROUND_HEEL_RISE.1).min(RISE_ENDS_BY);
-    let out_from = out_to - RISE_OUT_AROUND_HEEL_RISE.0 - RISE_OUT_AROUND_HEEL_RISE.1;
+    let (out_from, out_to) = (heel_rise - RISE_OUT_AROUND_HEEL_RISE.0, heel_rise + RISE_OUT_AROUND_HEEL_RISE.1);
     ease(q, RISE_IN.0, RISE_IN.1).min(1.0 - ease(q, out_from, out_to))
 }
 
@@ -164,15 +151,14 @@ impl Walker {
         let r = &self.gait.r;
         let keyed = pose.position.y;
         let mut lifted: Option<f64> = None;
-        let weight_of = |leg: &LegState| {
+        let weights = self.legs.each_ref().map(|leg: &LegState| {
             if leg.phase.is_stance() {
                 walking * leg.stance_rise * window(phase - leg.cycle_start, leg.heel_rise)
             } else {
                 0.0
             }
-        };
-        for leg in &self.legs {
-            let weight = weight_of(leg);
+        });
+        for (leg, &weight) in self.legs.iter().zip(&weights) {
             if weight <= 0.0 {
                 continue;
             }
@@ -188,7 +174,7 @@ impl Walker {
         // Every other leg, swinging or still on its toes in double support, keeps to the reach
         // it has under the keyed pelvis: the lift never takes it further (a trailing foot in
         // double support was pulled off the ground on a stair).
-        for leg in self.legs.iter().filter(|leg| weight_of(leg) <= 0.0) {
+        for (leg, _) in self.legs.iter().zip(&weights).filter(|(_, w)| **w <= 0.0) {
             let target = self.gait.target_of(leg, phase, pose.hip(leg.side.sign()));
             // A foot on its toes rolls further from REACH_EASE of the reach on: kept inside it,
             // and so is the same leg once it swings, or the cap would jump at its toe-off.
