@@ -116,6 +116,7 @@ fn cycle_charts_keep_their_last_label_inside_and_no_legend_covers_a_lone_curve()
     let people = gaitlab::normative::PelvisNorms::built_in().at(1.3).vertical_range_cm.0;
     let name = format!("adults' range, {people:.1} cm at 1.30 m/s");
     assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == name), "no '{name}' in pelvis.svg");
+    assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == "centred on the walk's mean (WBDS)"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -145,7 +145,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         Some(range_band(mean_of(&cycles[0][3]), people.vertical_range_cm.0)),
     ];
     let range_name = format!(
-        "adults' range, {:.1} cm at {:.2} m/s\n(WBDS pelvis markers)",
+        "adults' range, {:.1} cm at {:.2} m/s\ncentred on the walk's mean (WBDS)",
         people.vertical_range_cm.0, people.speed_mps
     );
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
