@@ -39,36 +39,41 @@ type Bounds = [(f64, f64, f64); 3];
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // 2.05 / 0.994 / 0; 3.21 / 0.991 / 8; 2.03 / 0.962 / 0 (session 14: 2.08 / 0.994 / 0;
-        // 4.91 / 0.986 / 14; 2.13 / 0.967 / 0; session 13: 3.28 / 0.994 / 0; 7.25 / 0.983 / 27;
-        // 2.69 / 0.991 / 0).
-        ("configs/default.toml", &[], [(2.3, 0.99, 0.0), (3.5, 0.985, 12.0), (2.4, 0.955, 4.0)]),
-        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.69 / 0.989 / 0; 2.52 / 0.996 / 0;
-        // 1.39 / 0.978 / 0 (session 17 with the pelvis rising over a straight stance leg, before
+        // 2.43 / 0.995 / 0; 3.78 / 0.988 / 10; 1.73 / 0.975 / 0 (session 18, the pelvis placed
+        // for people's vertical range, 3.0 cm against 1.9; session 17: 2.05 / 0.994 / 0, 3.21 /
+        // 0.991 / 8, 2.03 / 0.962 / 0; session 14: 2.08 / 0.994 / 0; 4.91 / 0.986 / 14; 2.13 /
+        // 0.967 / 0; session 13: 3.28 / 0.994 / 0; 7.25 / 0.983 / 27; 2.69 / 0.991 / 0).
+        ("configs/default.toml", &[], [(2.6, 0.99, 0.0), (4.0, 0.985, 12.0), (2.0, 0.97, 4.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.63 / 0.990 / 0; 2.65 / 0.994 / 0;
+        // 1.25 / 0.982 / 0 (session 18; session 17: 2.69 / 0.989 / 0, 2.52 / 0.996 / 0, 1.39 /
+        // 0.978 / 0; session 17 with the pelvis rising over a straight stance leg, before
         // the slow designs' refit and the mid-stance knee of 7 -> 4 deg: 2.79 / 0.986 / 0, 3.18 / 0.992 / 2, 1.42 / 0.976 / 0; session 16:
         // 2.83 / 0.991 / 0, 4.34 / 0.991 / 2, 2.04 / 0.965 / 0; session 14: 3.73 / 0.991, 6.65 /
         // 0.989 / 14, 2.14 / 0.965).
-        ("configs/stroll.toml", &[], [(3.0, 0.985, 0.0), (2.8, 0.99, 4.0), (1.7, 0.97, 4.0)]),
-        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 3.54 / 0.988 / 0; 4.83 / 0.973 / 12;
-        // 2.22 / 0.972 / 0 (session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
+        ("configs/stroll.toml", &[], [(2.9, 0.985, 0.0), (2.9, 0.99, 4.0), (1.5, 0.975, 4.0)]),
+        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.08 / 0.994 / 0; 4.41 / 0.981 / 10;
+        // 2.30 / 0.971 / 0 (session 18; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
+        // 0.972 / 0; session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
         // its push-off at -25.6 deg; session 14: 2.68 / 0.992, 5.91 / 0.974 / 12, 3.60).
-        ("configs/brisk.toml", &[], [(3.8, 0.985, 0.0), (5.0, 0.97, 14.0), (2.5, 0.965, 4.0)]),
+        ("configs/brisk.toml", &[], [(2.4, 0.99, 0.0), (4.7, 0.975, 14.0), (2.6, 0.965, 4.0)]),
         // 3.06 / 0.981 / 0; 2.45 / 0.994 / 2; 1.51 / 0.970 / 0 (before the slow designs' refit
         // 3.19 / 0.975 / 0, 3.38 / 0.987 / 2, 1.63 / 0.962 / 0; session 16: 3.01 / 0.985 / 0,
         // 4.30 / 0.990 / 2, 2.02 / 0.957 / 0: the rise over the stance leg costs the hip 0.01 of
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
         ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.3, 0.975, 0.0), (2.8, 0.99, 6.0), (1.8, 0.96, 4.0)]),
-        // 2.51 / 0.993 / 0; 2.81 / 0.995 / 0; 1.53 / 0.978 / 0 (before the slow designs' refit
+        // 2.40 / 0.993 / 0; 3.12 / 0.992 / 2; 1.15 / 0.985 / 0 (session 18; session 17: 2.51 /
+        // 0.993 / 0, 2.81 / 0.995 / 0, 1.53 / 0.978 / 0; before the slow designs' refit
         // 2.54 / 0.991 / 0, 3.22 / 0.995 / 0, 1.62 / 0.976 / 0; session 16: 2.64 / 0.994 / 0,
         // 4.30 / 0.992 / 0, 2.20 / 0.964 / 0; session 14: 3.44 / 0.994, 6.40 / 0.989 / 16, 2.33
         // / 0.966).
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.8, 0.985, 0.0), (3.1, 0.99, 4.0), (1.9, 0.965, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.7, 0.99, 0.0), (3.4, 0.99, 4.0), (1.4, 0.98, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.3, 0.99, 0.0), (3.5, 0.985, 12.0), (2.4, 0.955, 4.0)]),
-        // 3.08 / 0.990 / 0; 4.29 / 0.980 / 8; 1.74 / 0.976 / 0 (session 15: 2.48 / 0.993 / 0,
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.6, 0.99, 0.0), (4.0, 0.985, 12.0), (2.0, 0.97, 4.0)]),
+        // 1.91 / 0.995 / 0; 3.92 / 0.986 / 8; 1.67 / 0.979 / 0 (session 18; session 17: 3.08 /
+        // 0.990 / 0, 4.29 / 0.980 / 8, 1.74 / 0.976 / 0; session 15: 2.48 / 0.993 / 0,
         // 3.44 / 0.988 / 6, 2.75 / 0.974 / 0, its push-off at -23.6 deg; session 14: 2.21 /
         // 0.993, 5.70 / 0.979 / 18, 2.80 / 0.981 / 2).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(3.3, 0.985, 0.0), (4.6, 0.975, 10.0), (2.0, 0.97, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.2, 0.99, 0.0), (4.2, 0.98, 10.0), (1.9, 0.975, 4.0)]),
     ];
 
     for (config, sets, bounds) in cases {
@@ -127,9 +132,9 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 
 /// The loading-response knee: its peak (0-25 % of the cycle, right leg's mean cycle) near the
 /// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Measured
-/// session 17, with the pelvis rising over the stance leg in slow walks (`pelvis.stance_rise`):
-/// 9.3 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.1 at 10 % at 1.0 (11.3 at 12), 18.2 at 12 %
-/// at 1.3 (16.5 at 13); before, the slow walks' knee stayed flexed past the hip's passage over
+/// session 18: 9.6 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.1 at 9 % at 1.0 (11.3 at 12),
+/// 18.4 at 10 % at 1.3 (16.5 at 13). Session 17, with the pelvis rising over the stance leg in
+/// slow walks (`pelvis.stance_rise`): 9.3 at 10 %, 14.1 at 10 %, 18.2 at 12 %; before, the slow walks' knee stayed flexed past the hip's passage over
 /// the ankle: 14.8 at 19 % and 18.2 at 16 %.
 #[test]
 fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
@@ -244,10 +249,13 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // Against the same adults' measured pelvis (data/normative/pelvis_vertical_by_speed.csv:
     // the centre of their pelvis markers, 2.49 / 2.88 / 3.59 / 4.53 cm at 0.77 / 0.99 / 1.32 /
     // 1.57 m/s), measured session 17: the walk's range is 0.29 / 0.44 / 0.54 / 0.64 of people's
-    // at 0.7 / 1.0 / 1.3 / 1.6 m/s. The gap is issue 12's, open; this holds what is there.
+    // at 0.7 / 1.0 / 1.3 / 1.6 m/s. Session 18 placed the pelvis over the foot for people's
+    // range from 1.0 m/s (`speed_laws::midstance_offset_cm`): 0.72 / 1.72 / 2.97 / 3.54 cm,
+    // 0.29 / 0.60 / 0.83 / 0.78 of people's; at 1.3 and 1.6 m/s inside their mean ± 1 SD
+    // (3.59 ± 1.58, 4.53 ± 1.63), held here. The slow walks' gap is issue 12's, open.
     let people = gaitlab::normative::PelvisNorms::built_in();
     let mut previous: Option<(f64, f64)> = None;
-    for (speed, least_share) in [(0.7, 0.25), (1.0, 0.40), (1.3, 0.50), (1.6, 0.60)] {
+    for (speed, least_share) in [(0.7, 0.25), (1.0, 0.55), (1.3, 0.75), (1.6, 0.70)] {
         let set = format!("walk.speed_mps={speed}");
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[set]).unwrap();
@@ -258,8 +266,11 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
         let orendurff_lateral = 6.9 - 3.44 * (speed - 0.7);
         assert!((lateral - orendurff_lateral).abs() < 0.5, "{speed} m/s: lateral {lateral}");
         assert!(vertical < 4.8 + 0.5, "{speed} m/s: vertical {vertical}");
-        let measured = people.at(speed).vertical_range_cm.0;
+        let (measured, sd) = people.at(speed).vertical_range_cm;
         assert!(vertical >= least_share * measured, "{speed} m/s: vertical {vertical} against people's {measured}");
+        if speed >= 1.3 {
+            assert!(vertical >= measured - sd, "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}");
+        }
         if let Some((v0, l0)) = previous {
             assert!(vertical > v0 + 0.4 && lateral < l0 - 0.5, "{speed} m/s: {vertical} {lateral} after {v0} {l0}");
         }

@@ -487,14 +487,14 @@ fn the_stance_leg_reaches_until_its_heel_rises_whatever_the_mid_stance_drop() {
     }
 }
 
-/// A change whose heel-rise phase differs (the speed's own above 1.3 m/s, or a typed
-/// `legs.heel_rise`) ends in the walk of the new phase. A heel strike always finds the other
-/// leg inside its heel rise, so a restore at heel strikes alone kept the old phase for good:
-/// after 1.3 -> 1.6 m/s the heels rose at 0.31 of the cycle instead of the law's 0.28, and a
-/// typed 0.36 was shown but never walked. (The law now gives 0.28 at 1.3 m/s, 0.27 at 1.6.)
+/// A change whose heel-rise phase differs (another speed's own, or a typed `legs.heel_rise`)
+/// ends in the walk of the new phase. A heel strike always finds the other leg inside its heel
+/// rise, so a restore at heel strikes alone kept the old phase for good: after 1.3 -> 1.6 m/s
+/// the heels rose at 0.31 of the cycle instead of the law's 0.28 of then, and a typed 0.36 was
+/// shown but never walked. (The law now gives 0.291 at 1.3 m/s and 0.31 at 0.8.)
 #[test]
 fn a_change_of_heel_rise_phase_reaches_the_walk() {
-    for (text, wanted) in [("[walk]\nspeed_mps = 1.6\n", 0.27), ("[legs]\nheel_rise = 0.36\n", 0.36)] {
+    for (text, wanted) in [("[walk]\nspeed_mps = 0.8\n", 0.31), ("[legs]\nheel_rise = 0.36\n", 0.36)] {
         let changed = config::load_text(text, "live", &[]).unwrap();
         let mut w = Walker::new(&default_params()).unwrap();
         let mut rising_at = Vec::new();
@@ -517,7 +517,7 @@ fn a_change_of_heel_rise_phase_reaches_the_walk() {
             }
         }
         assert!((w.resolved().heel_rise - wanted).abs() < 1e-9, "{text}: {}", w.resolved().heel_rise);
-        // Entered at the first frame past it: within a frame (1.6 m/s: 0.022 of a cycle).
+        // Entered at the first frame past it: within a frame (0.8 m/s: 0.013 of a cycle).
         assert!(
             rising_at.len() >= 4 && rising_at.iter().all(|p| (p - wanted) >= 0.0 && (p - wanted) < 0.025),
             "{text}: {rising_at:?}"

@@ -304,7 +304,7 @@ pub static PARAMS: &[ParamSpec] = &[
             }
         },
     },
-    choice!(optimiser => method, SearchMethod, METHODS, "Search: thesis (two levels of candidates); golden / brent (the thesis's first level, then as many points again placed by golden sections / parabolas around its best: no slower, mostly lower, up to 4 % higher on steep uphill steps); joint (both levels, then Brent on position, height, position: deepest, ~5x slower)"),
+    choice!(optimiser => method, SearchMethod, METHODS, "Search: thesis (two levels of candidates); golden / brent (the thesis's first level, then as many points again placed by golden sections / parabolas around its best: no slower, up to 4 % higher on steep uphill steps, lower only where the first level's best is not at the edge of what the legs reach); joint (both levels, then Brent on position, height, position: deepest, ~5x slower)"),
     int!(optimiser => candidates, u32, 3, 50, "Evenly spaced candidates over the range: the first level, with which every method starts"),
     int!(optimiser => refine, u32, 0, 50, "Candidates spread around the first level's best: the second level (0: none); golden and brent spend the same number, joint refines after it"),
     ParamSpec {
