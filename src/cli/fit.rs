@@ -71,12 +71,23 @@ fn fitted_config(
     Ok(format!(
         "# Fitted by `gaitlab fit` against {source} at {:.3} m/s, {}.\n\
          # Hip / knee / ankle RMS difference (deg): {before} before, {after} after ({} walks).\n\
+         # {}.\n\
          # Keys fitted: {}.\n\n{body}",
         result.comparison.0.reference_speed_mps,
         result.comparison.0.reference_blocks(),
         result.evaluations,
+        pelvis_line(&result.comparison),
         fitted.join(", ")
     ))
+}
+
+/// The walk's pelvis vertical range before and after beside people's at its speed.
+fn pelvis_line((before, after): &(Comparison, Comparison)) -> String {
+    let (mean, sd) = after.pelvis_norms.vertical_range_cm;
+    format!(
+        "Pelvis vertical range: {:.2} cm before, {:.2} after (people's {mean:.2} +- {sd:.2} cm)",
+        before.pelvis_vertical_range_cm, after.pelvis_vertical_range_cm
+    )
 }
 
 fn rms_line(c: &Comparison) -> String {
@@ -116,6 +127,7 @@ fn write_table(
             b.curve, b.rms_deg, a.rms_deg, b.pearson_r, a.pearson_r, b.outside_2sd_pct, a.outside_2sd_pct
         )?;
     }
+    writeln!(out, "{}", pelvis_line(&r.comparison))?;
     writeln!(out, "cost (mean RMS of hip, knee and ankle, deg, + penalties): {:.3} -> {:.3}", r.cost.0, r.cost.1)?;
     match written {
         Some(p) => writeln!(out, "wrote {}", p.display()),
@@ -139,6 +151,10 @@ fn write_json(out: &mut dyn Write, r: &FitResult, seconds: f64) -> io::Result<()
         "seconds": seconds,
         "curves_before": r.comparison.0.curves,
         "curves_after": r.comparison.1.curves,
+        "pelvis_vertical_range_cm_before": r.comparison.0.pelvis_vertical_range_cm,
+        "pelvis_vertical_range_cm_after": r.comparison.1.pelvis_vertical_range_cm,
+        "pelvis_vertical_range_norm_cm": r.comparison.1.pelvis_norms.vertical_range_cm.0,
+        "pelvis_vertical_range_norm_sd_cm": r.comparison.1.pelvis_norms.vertical_range_cm.1,
     });
     writeln!(out, "{line}")
 }
