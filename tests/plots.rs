@@ -118,6 +118,16 @@ fn cycle_charts_keep_their_last_label_inside_and_no_legend_covers_a_lone_curve()
     assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == name), "no '{name}' in pelvis.svg");
     assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == "centred on the walk's mean (WBDS)"));
     std::fs::remove_dir_all(&dir).unwrap();
+    // A walk faster than every measured block is shown the fastest block's range, and the
+    // legend names that block's speed, not the walk's (it read "4.5 cm at 1.75 m/s").
+    report_of(&dir, &["configs/brisk.toml", "--cycles", "4"]);
+    let pelvis = std::fs::read_to_string(dir.join("plots/pelvis.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&pelvis).unwrap();
+    let people = gaitlab::normative::PelvisNorms::built_in().at(1.75).vertical_range_cm.0;
+    let name = format!("adults' range, {people:.1} cm at 1.57 m/s");
+    assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == name), "no '{name}' in pelvis.svg");
+    assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.trim() == "(the fastest measured)"));
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

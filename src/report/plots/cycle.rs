@@ -7,7 +7,7 @@ use super::common::{
 };
 use super::data::{Cycle, Data};
 use crate::model::walk::frame::LegFrame;
-use crate::normative::{PelvisNorms, Reference, References};
+use crate::normative::{PelvisAtSpeed, PelvisNorms, Reference, References};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -145,8 +145,9 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         Some(range_band(mean_of(&cycles[0][3]), people.vertical_range_cm.0)),
     ];
     let range_name = format!(
-        "adults' range, {:.1} cm at {:.2} m/s\ncentred on the walk's mean (WBDS)",
-        people.vertical_range_cm.0, people.speed_mps
+        "adults' range, {:.1} cm at {}\ncentred on the walk's mean (WBDS)",
+        people.vertical_range_cm.0,
+        measured_at(&people)
     );
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
         let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
@@ -254,4 +255,18 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         cycle_chart(area, name, unit, &lines, &walks[0].1.events)?;
     }
     root.present().map_err(err)
+}
+
+/// The speed people's pelvis range was read at: the walk's, or the nearest block's where the
+/// walk is faster or slower than every block (the table is not extrapolated: a 1.75 m/s walk
+/// is shown the 1.57 m/s block's range, and the legend says so on a line of its own, the
+/// legend's width kept).
+fn measured_at(people: &PelvisAtSpeed) -> String {
+    let block = people.from_block_mps;
+    if people.from_block_mps == people.to_block_mps && (people.speed_mps - block).abs() > 0.005 {
+        let end = if people.speed_mps > block { "fastest" } else { "slowest" };
+        format!("{block:.2} m/s\n(the {end} measured)")
+    } else {
+        format!("{:.2} m/s", people.speed_mps)
+    }
 }
