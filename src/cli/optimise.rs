@@ -112,6 +112,8 @@ fn write_table(out: &mut dyn Write, path: &Path, params: &WalkParams, records: &
             "no feasible candidate: kept the previous ratio"
         } else if r.method.is_none() {
             "optimiser off"
+        } else if r.candidates.iter().any(|c| c.cost.zip(r.chosen.cost).is_some_and(|(c, chosen)| c < chosen)) {
+            "fixed rule kept: the search's best is within 0.5 % of it"
         } else {
             ""
         };

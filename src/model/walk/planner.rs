@@ -26,9 +26,10 @@ use glam::DVec3;
 /// replace the fixed rule. The cost is sampled, so two steps of one steady walk differ by up
 /// to 0.1 % and a toe-off noticed a frame late by up to 2 % (`tests/optimiser.rs`); a
 /// candidate that wins by less is a tie. Taken on a tie, the choice flipped with the fourth
-/// decimal of a key: at 1.0 m/s a mid-stance offset of 13.701 cm kept the fixed rule and
-/// 13.7014 cm moved the double support 1.7 cm ahead (ratio 0.53) for a cost 0.01 % lower,
-/// and the walk's knee RMS against the norms went from 3.43 to 4.83 deg.
+/// decimal of a key: at 1.0 m/s a mid-stance offset of 13.7014 cm kept the fixed rule and
+/// 13.701 cm moved the double support 1.7 cm ahead (ratio 0.53) for a cost 0.01 % lower,
+/// and the walk's knee RMS against the norms went from 3.43 to 4.83 deg. `gaitlab optimise`
+/// notes the steps where a tie kept the fixed rule.
 const CLEARLY_LOWER: f64 = 0.005;
 
 /// The cheapest of the searched `candidates` that can reach, or the fixed rule where it is not
@@ -595,5 +596,23 @@ mod tests {
         assert!(record.chosen.cost.is_none_or(f64::is_finite));
         let key = walker.plan.last_of(KeyKind::DoubleSupport).unwrap();
         assert_eq!((key.x, key.y), (record.chosen.x, record.chosen.y));
+    }
+
+    #[test]
+    fn a_search_s_best_replaces_the_fixed_rule_only_when_clearly_cheaper() {
+        use super::{CLEARLY_LOWER, searched_choice};
+        use crate::model::search::Candidate;
+        let at = |x: f64, cost: Option<f64>| Candidate { x, y: 0.9, cost };
+        let fixed = at(1.0, Some(1000.0));
+        let tie = 1000.0 * (1.0 - 0.5 * CLEARLY_LOWER);
+        let clear = 1000.0 * (1.0 - 2.0 * CLEARLY_LOWER);
+        let near = [at(1.0, Some(1000.0)), at(1.02, Some(tie)), at(1.04, None)];
+        assert_eq!(searched_choice(&near, fixed).unwrap().x, 1.0, "a tie keeps the fixed rule");
+        let far = [at(1.0, Some(1000.0)), at(1.02, Some(tie)), at(1.04, Some(clear))];
+        assert_eq!(searched_choice(&far, fixed).unwrap().x, 1.04);
+        // A fixed rule out of reach is no choice; no candidate in reach is none.
+        let unreachable = at(1.0, None);
+        assert_eq!(searched_choice(&near, unreachable).unwrap().x, 1.02);
+        assert!(searched_choice(&[at(1.0, None), at(1.02, None)], fixed).is_none());
     }
 }
