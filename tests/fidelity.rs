@@ -134,8 +134,9 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 /// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Measured
 /// session 18: 9.6 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.1 at 9 % at 1.0 (11.3 at 12),
 /// 18.4 at 10 % at 1.3 (16.5 at 13). Session 17, with the pelvis rising over the stance leg in
-/// slow walks (`pelvis.stance_rise`): 9.3 at 10 %, 14.1 at 10 %, 18.2 at 12 %; before, the slow walks' knee stayed flexed past the hip's passage over
-/// the ankle: 14.8 at 19 % and 18.2 at 16 %.
+/// slow walks (`pelvis.stance_rise`): 9.3 at 10 %, 14.1 at 10 %, 18.2 at 12 %; before, the
+/// slow walks' knee stayed flexed past the hip's passage over the ankle: 14.8 at 19 % and 18.2
+/// at 16 %.
 #[test]
 fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
     for (speed, most_deg_over) in [(0.8, 1.5), (1.0, 3.0), (1.3, 2.5)] {
