@@ -278,14 +278,15 @@ const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// swing knee peaks at 76-77 % of the cycle either way (the norms' 74-75 %). The comfortable
 /// and fast designs were refitted in session 18 with the speed laws that place the pelvis over
 /// the foot (`speed_laws::midstance_offset_cm` and its partners), the walk's pelvis vertical
-/// range held at people's measured one less about half an SD (3.0 cm at 1.3 m/s, 3.7 at 1.6;
+/// range held at people's measured one less about half an SD (3.0 cm at 1.3 m/s, 3.5 at 1.6;
 /// 1.9 and 2.9 before), the loading knee's peak within 2° of the norms', and each
 /// segment's Bézier polygon monotone (a heel rise that stalled and then spurted into toe-off
 /// set a walk's first step from standing moving the hip 1.22x as fast as the steady walk's;
 /// `tests/start.rs` holds 1.2x). Hip / knee / ankle RMS against the speed-matched norms,
 /// before -> after: 2.05 / 3.21 / 2.03 -> 2.43 / 3.78 / 1.73 at 1.3 m/s, 3.08 / 4.29 / 1.74 ->
-/// 1.98 / 3.80 / 1.62 at 1.6, 3.54 / 4.83 / 2.22 -> 2.11 / 4.24 / 2.24 at 1.75
-/// (docs/gait-model.md §12, session 18).
+/// 1.91 / 3.92 / 1.67 at 1.6, 3.54 / 4.83 / 2.22 -> 2.08 / 4.41 / 2.30 at 1.75, with the fast
+/// walk's heel rise at 0.275 of the cycle (`speed_laws::heel_rise_phase`; docs/gait-model.md
+/// §12, session 18).
 const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
     [(0.0, 0.0, 0.5), (0.316, 0.2194, 0.98), (0.632, 0.6468, 1.19), (0.842, 0.9674, 0.616), (1.0, 1.0, 0.357)],
     [(0.0, 0.0, 0.5), (0.316, 0.2218, 0.98), (0.632, 0.5962, 1.9808), (0.842, 0.936, 0.9939), (1.0, 1.0, 0.2201)],

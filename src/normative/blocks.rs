@@ -23,14 +23,31 @@ pub(super) fn bracket(speeds: &[f64], speed_mps: f64) -> (usize, usize, f64) {
 /// the fastest (the walk is faster; not extrapolated)".
 pub(super) fn blocks_used(speed_mps: f64, (from, to): (f64, f64)) -> String {
     if from < to {
-        format!("interpolated between the {from:.3} and {to:.3} m/s blocks")
-    } else if speed_mps > to + 1e-9 {
-        format!("the {to:.3} m/s block, the fastest (the walk is faster; not extrapolated)")
-    } else if speed_mps < from - 1e-9 {
-        format!("the {from:.3} m/s block, the slowest (the walk is slower; not extrapolated)")
-    } else {
-        format!("the {from:.3} m/s block")
+        return format!("interpolated between the {from:.3} and {to:.3} m/s blocks");
     }
+    match beyond_blocks(speed_mps, (from, to)) {
+        Some(end) => format!("the {to:.3} m/s block, the {end} (the walk is {}; not extrapolated)", walk_is(end)),
+        None => format!("the {from:.3} m/s block"),
+    }
+}
+
+/// "fastest" or "slowest" where a norm at `speed_mps` was read from the end block (`from` =
+/// `to`) because the walk is faster or slower than every block; `None` where it was read at
+/// the walk's own speed.
+pub(super) fn beyond_blocks(speed_mps: f64, (from, to): (f64, f64)) -> Option<&'static str> {
+    if from < to {
+        None
+    } else if speed_mps > to + 1e-9 {
+        Some("fastest")
+    } else if speed_mps < from - 1e-9 {
+        Some("slowest")
+    } else {
+        None
+    }
+}
+
+fn walk_is(end: &str) -> &'static str {
+    if end == "fastest" { "faster" } else { "slower" }
 }
 
 /// Reads a table of speed blocks: `#` comments, a header, one row a block; returns the

@@ -7,7 +7,7 @@
 //! from other people and another marker model, and the walk's pelvis is a pelvis. These are the
 //! same adults whose joint angles the walk is compared with.
 
-use super::blocks::{blocks_used, bracket, parse_rows};
+use super::blocks::{beyond_blocks, blocks_used, bracket, parse_rows};
 use crate::error::Result;
 
 /// How the built-in pelvis norms are named.
@@ -85,6 +85,14 @@ impl PelvisAtSpeed {
     #[must_use]
     pub fn blocks_used(&self) -> String {
         blocks_used(self.speed_mps, (self.from_block_mps, self.to_block_mps))
+    }
+
+    /// "fastest" or "slowest" where the walk is faster or slower than every block and the end
+    /// block was taken (the table is not extrapolated); `None` where the range is read at the
+    /// walk's speed.
+    #[must_use]
+    pub fn beyond_measured(&self) -> Option<&'static str> {
+        beyond_blocks(self.speed_mps, (self.from_block_mps, self.to_block_mps))
     }
 }
 

@@ -262,11 +262,8 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
 /// is shown the 1.57 m/s block's range, and the legend says so on a line of its own, the
 /// legend's width kept).
 fn measured_at(people: &PelvisAtSpeed) -> String {
-    let block = people.from_block_mps;
-    if people.from_block_mps == people.to_block_mps && (people.speed_mps - block).abs() > 0.005 {
-        let end = if people.speed_mps > block { "fastest" } else { "slowest" };
-        format!("{block:.2} m/s\n(the {end} measured)")
-    } else {
-        format!("{:.2} m/s", people.speed_mps)
+    match people.beyond_measured() {
+        Some(end) => format!("{:.2} m/s\n(the {end} measured)", people.from_block_mps),
+        None => format!("{:.2} m/s", people.speed_mps),
     }
 }
