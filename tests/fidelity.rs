@@ -39,41 +39,48 @@ type Bounds = [(f64, f64, f64); 3];
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
     let cases: [(&str, &[&str], Bounds); 7] = [
-        // 2.43 / 0.995 / 0; 3.78 / 0.988 / 10; 1.73 / 0.975 / 0 (session 18, the pelvis placed
-        // for people's vertical range, 3.0 cm against 1.9; session 17: 2.05 / 0.994 / 0, 3.21 /
+        // 1.75 / 0.996 / 0; 3.89 / 0.988 / 10; 2.08 / 0.976 / 0 (session 19, the norms' pelvic
+        // obliquity, its RMS 2.25 -> 0.35 deg, and the designs refitted to it; session 18, the
+        // pelvis placed for people's vertical range, 3.0 cm against 1.9: 2.43 / 0.995 / 0, 3.78 /
+        // 0.988 / 10, 1.73 / 0.975 / 0; session 17: 2.05 / 0.994 / 0, 3.21 /
         // 0.991 / 8, 2.03 / 0.962 / 0; session 14: 2.08 / 0.994 / 0; 4.91 / 0.986 / 14; 2.13 /
         // 0.967 / 0; session 13: 3.28 / 0.994 / 0; 7.25 / 0.983 / 27; 2.69 / 0.991 / 0).
-        ("configs/default.toml", &[], [(2.6, 0.99, 0.0), (4.0, 0.985, 12.0), (2.0, 0.97, 4.0)]),
-        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.63 / 0.990 / 0; 2.65 / 0.994 / 0;
-        // 1.25 / 0.982 / 0 (session 18; session 17: 2.69 / 0.989 / 0, 2.52 / 0.996 / 0, 1.39 /
+        ("configs/default.toml", &[], [(2.0, 0.99, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.13 / 0.990 / 0; 3.10 / 0.994 / 0;
+        // 1.43 / 0.984 / 0 (session 19; session 18: 2.63 / 0.990 / 0, 2.65 / 0.994 / 0, 1.25 /
+        // 0.982 / 0; session 17: 2.69 / 0.989 / 0, 2.52 / 0.996 / 0, 1.39 /
         // 0.978 / 0; session 17 with the pelvis rising over a straight stance leg, before
         // the slow designs' refit and the mid-stance knee of 7 -> 4 deg: 2.79 / 0.986 / 0, 3.18 / 0.992 / 2, 1.42 / 0.976 / 0; session 16:
         // 2.83 / 0.991 / 0, 4.34 / 0.991 / 2, 2.04 / 0.965 / 0; session 14: 3.73 / 0.991, 6.65 /
         // 0.989 / 14, 2.14 / 0.965).
-        ("configs/stroll.toml", &[], [(2.9, 0.985, 0.0), (2.9, 0.99, 4.0), (1.5, 0.975, 4.0)]),
-        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.08 / 0.994 / 0; 4.41 / 0.981 / 10;
-        // 2.30 / 0.971 / 0 (session 18; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
+        ("configs/stroll.toml", &[], [(2.5, 0.985, 0.0), (3.3, 0.99, 4.0), (1.6, 0.975, 4.0)]),
+        // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.81 / 0.993 / 0; 4.16 / 0.981 / 10;
+        // 2.70 / 0.974 / 0 (session 19; session 18: 2.08 / 0.994 / 0, 4.41 / 0.981 / 10, 2.30 /
+        // 0.971 / 0; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
         // 0.972 / 0; session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
         // its push-off at -25.6 deg; session 14: 2.68 / 0.992, 5.91 / 0.974 / 12, 3.60).
-        ("configs/brisk.toml", &[], [(2.4, 0.99, 0.0), (4.7, 0.975, 14.0), (2.6, 0.965, 4.0)]),
-        // 3.06 / 0.981 / 0; 2.45 / 0.994 / 2; 1.51 / 0.970 / 0 (before the slow designs' refit
+        ("configs/brisk.toml", &[], [(3.1, 0.99, 0.0), (4.5, 0.975, 14.0), (3.0, 0.965, 4.0)]),
+        // 2.77 / 0.983 / 0; 2.70 / 0.994 / 2; 1.95 / 0.956 / 0 (session 19; session 18: 3.06 /
+        // 0.981 / 0, 2.45 / 0.994 / 2, 1.51 / 0.970 / 0; before the slow designs' refit
         // 3.19 / 0.975 / 0, 3.38 / 0.987 / 2, 1.63 / 0.962 / 0; session 16: 3.01 / 0.985 / 0,
         // 4.30 / 0.990 / 2, 2.02 / 0.957 / 0: the rise over the stance leg costs the hip 0.01 of
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.3, 0.975, 0.0), (2.8, 0.99, 6.0), (1.8, 0.96, 4.0)]),
-        // 2.40 / 0.993 / 0; 3.12 / 0.992 / 2; 1.15 / 0.985 / 0 (session 18; session 17: 2.51 /
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(3.1, 0.975, 0.0), (3.0, 0.99, 6.0), (2.2, 0.95, 4.0)]),
+        // 2.30 / 0.991 / 0; 3.40 / 0.991 / 4; 1.27 / 0.984 / 0 (session 19; session 18: 2.40 /
+        // 0.993 / 0, 3.12 / 0.992 / 2, 1.15 / 0.985 / 0; session 17: 2.51 /
         // 0.993 / 0, 2.81 / 0.995 / 0, 1.53 / 0.978 / 0; before the slow designs' refit
         // 2.54 / 0.991 / 0, 3.22 / 0.995 / 0, 1.62 / 0.976 / 0; session 16: 2.64 / 0.994 / 0,
         // 4.30 / 0.992 / 0, 2.20 / 0.964 / 0; session 14: 3.44 / 0.994, 6.40 / 0.989 / 16, 2.33
         // / 0.966).
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.7, 0.99, 0.0), (3.4, 0.99, 4.0), (1.4, 0.98, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.6, 0.985, 0.0), (3.7, 0.985, 6.0), (1.6, 0.975, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.6, 0.99, 0.0), (4.0, 0.985, 12.0), (2.0, 0.97, 4.0)]),
-        // 1.91 / 0.995 / 0; 3.92 / 0.986 / 8; 1.67 / 0.979 / 0 (session 18; session 17: 3.08 /
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.0, 0.99, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        // 2.22 / 0.994 / 0; 3.87 / 0.985 / 10; 2.28 / 0.973 / 0 (session 19; session 18: 1.91 /
+        // 0.995 / 0, 3.92 / 0.986 / 8, 1.67 / 0.979 / 0; session 17: 3.08 /
         // 0.990 / 0, 4.29 / 0.980 / 8, 1.74 / 0.976 / 0; session 15: 2.48 / 0.993 / 0,
         // 3.44 / 0.988 / 6, 2.75 / 0.974 / 0, its push-off at -23.6 deg; session 14: 2.21 /
         // 0.993, 5.70 / 0.979 / 18, 2.80 / 0.981 / 2).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.2, 0.99, 0.0), (4.2, 0.98, 10.0), (1.9, 0.975, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.5, 0.99, 0.0), (4.2, 0.98, 12.0), (2.6, 0.97, 4.0)]),
     ];
 
     for (config, sets, bounds) in cases {
@@ -132,14 +139,17 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 
 /// The loading-response knee: its peak (0-25 % of the cycle, right leg's mean cycle) near the
 /// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Measured
-/// session 18: 9.6 deg at 10 % at 0.8 m/s (norms 8.3 at 11), 14.1 at 9 % at 1.0 (11.3 at 12),
-/// 18.4 at 10 % at 1.3 (16.5 at 13). Session 17, with the pelvis rising over the stance leg in
+/// session 19: 10.3 deg at 8 % at 0.8 m/s (norms 8.3 at 11), 13.2 at 8 % at 1.0 (11.3 at 12),
+/// 18.0 at 8 % at 1.3 (16.5 at 13): with the norms' pelvic obliquity the landing hip is no
+/// longer dropped at heel strike, the double support sits lower and the slow walk's loading
+/// knee flexes 1° further (the bound at 0.8 m/s 1.5 -> 2.5°). Session 18: 9.6 at 10 %, 14.1 at
+/// 9 %, 18.4 at 10 %. Session 17, with the pelvis rising over the stance leg in
 /// slow walks (`pelvis.stance_rise`): 9.3 at 10 %, 14.1 at 10 %, 18.2 at 12 %; before, the
 /// slow walks' knee stayed flexed past the hip's passage over the ankle: 14.8 at 19 % and 18.2
 /// at 16 %.
 #[test]
 fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
-    for (speed, most_deg_over) in [(0.8, 1.5), (1.0, 3.0), (1.3, 2.5)] {
+    for (speed, most_deg_over) in [(0.8, 2.5), (1.0, 3.0), (1.3, 2.5)] {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[format!("walk.speed_mps={speed}")]).unwrap();
         let walk = gaitlab::snapshot::measure::measure(&path, &params).unwrap();
@@ -253,7 +263,9 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // at 0.7 / 1.0 / 1.3 / 1.6 m/s. Session 18 placed the pelvis over the foot for people's
     // range from 1.0 m/s (`speed_laws::midstance_offset_cm`): 0.72 / 1.72 / 2.97 / 3.54 cm,
     // 0.29 / 0.60 / 0.83 / 0.78 of people's; at 1.3 and 1.6 m/s inside their mean ± 1 SD
-    // (3.59 ± 1.58, 4.53 ± 1.63), held here. The slow walks' gap is issue 12's, open.
+    // (3.59 ± 1.58, 4.53 ± 1.63), held here. Session 19, with the norms' pelvic obliquity (the
+    // landing hip up at heel strike, so the double support lower): 0.72 / 1.87 / 3.06 / 3.70 cm.
+    // The slow walks' gap is issue 12's, open.
     let people = gaitlab::normative::PelvisNorms::built_in();
     let mut previous: Option<(f64, f64)> = None;
     for (speed, least_share) in [(0.7, 0.25), (1.0, 0.55), (1.3, 0.75), (1.6, 0.70)] {
@@ -276,5 +288,33 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
             assert!(vertical > v0 + 0.4 && lateral < l0 - 0.5, "{speed} m/s: {vertical} {lateral} after {v0} {l0}");
         }
         previous = Some((vertical, lateral));
+    }
+}
+
+/// Pelvic obliquity: the norms' own shape and range at every speed (session 19,
+/// `PELVIS_OBLIQUITY_KEYS` and `speed_laws::obliquity_range_deg`). Measured: RMS 0.36 / 0.22 /
+/// 0.35 / 0.44 / 0.38 deg, r 0.996-0.999, range within 0.13 deg of the norms' at 0.8 / 1.0 / 1.3
+/// / 1.6 / 1.75 m/s, no sample outside their 1 SD band. The design before (after Lin et al.
+/// 2014, a fixed 7 deg) read RMS 2.0-2.7, r 0.70-0.74 and 63 % of the cycle outside 1 SD at
+/// 1.3 m/s, its range 1.2 deg under the norms' at 0.8 m/s and 7.4 under at 1.6.
+#[test]
+fn pelvic_obliquity_follows_the_norms_shape_and_range_at_every_speed() {
+    for (config, sets) in [
+        ("configs/default.toml", &["walk.speed_mps=0.8"][..]),
+        ("configs/default.toml", &["walk.speed_mps=1.0"]),
+        ("configs/default.toml", &[]),
+        ("configs/default.toml", &["walk.speed_mps=1.6"]),
+        ("configs/brisk.toml", &[]),
+    ] {
+        let c = compare(config, sets);
+        let k = c.curves.iter().find(|k| k.curve == "pelvis_obliq_up").unwrap();
+        assert!(
+            k.rms_deg <= 0.6 && k.pearson_r >= 0.99 && k.range_difference_deg.abs() <= 0.5 && k.outside_1sd_pct == 0.0,
+            "{config} {sets:?}: rms {:.2}, r {:.3}, range {:+.2} deg, {:.0} % outside 1 SD",
+            k.rms_deg,
+            k.pearson_r,
+            k.range_difference_deg,
+            k.outside_1sd_pct
+        );
     }
 }

@@ -115,13 +115,7 @@ impl CurveName {
     #[must_use]
     pub fn default_curve(self) -> Curve {
         let keys: &[(f64, f64, f64)] = match self {
-            // Lin et al. 2014 (and Perry & Burnfield, Gait Analysis, ch. 8): the stance-side hip
-            // is highest just after loading, as the opposite side drops at opposite toe-off
-            // (x = 0.15, end of the double support after right heel strike), lowest mirrored at
-            // 0.65, with the fast change inside double support and a slow fall in single support.
-            CurveName::PelvisObliquity => {
-                &[(0.0, -0.5, 3.0), (0.15, 1.0, 0.0), (0.5, 0.5, -3.0), (0.65, -1.0, 0.0), (1.0, -0.5, 3.0)]
-            }
+            CurveName::PelvisObliquity => &PELVIS_OBLIQUITY_KEYS,
             // Perry & Burnfield: the pelvis rotates forward with the swinging limb; the right hip
             // is furthest forward at right heel strike (x = 0) and furthest back at left heel
             // strike (0.5), passing neutral at mid-stance (0.25 / 0.75). Close to a cosine.
@@ -189,6 +183,24 @@ impl CurveName {
     }
 }
 
+/// Pelvic obliquity's unit shape: the speed-matched norms' own (data/normative/
+/// joint_angles_by_speed.csv, the five speed blocks' mean curves each scaled to a unit peak,
+/// averaged and made antisymmetric). The stance-side hip is highest at 15 % (loading response,
+/// as the opposite side drops after its toe-off), back to level by 35-40 % and slightly low by
+/// the opposite heel strike; the keys' RMS from that shape is 0.017 of the peak (0.1° at
+/// 1.3 m/s). The earlier design (after Lin et al. 2014) held the stance hip up through single
+/// support and dropped it inside the opposite double support: r 0.73 against the norms, 63 % of
+/// the cycle outside their 1 SD band. The range by speed is `speed_laws::obliquity_range_deg`.
+const PELVIS_OBLIQUITY_KEYS: [(f64, f64, f64); 7] = [
+    (0.0, 0.22, 0.0),
+    (0.15, 1.0, 0.0),
+    (0.40, -0.06, 0.0),
+    (0.5, -0.22, 0.0),
+    (0.65, -1.0, 0.0),
+    (0.90, 0.06, 0.0),
+    (1.0, 0.22, 0.0),
+];
+
 /// The rise out of double support is quicker than the fall into it: level at both ends, but
 /// 0.4 of the way up at 0.35 of the segment (the symmetric shape is at 0.28). The landing
 /// leg's knee flexes in loading response as the hip passes over the ankle lower than the leg
@@ -217,25 +229,25 @@ const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
     [
         (0.0, 0.20, 0.7),
         (0.16, 0.257, 0.0),
-        (0.47, 0.1341, -0.6),
-        (0.75, 0.0196, -0.1),
-        (0.88, 0.0186, -0.082),
+        (0.47, 0.1247, -0.6),
+        (0.75, 0.0181, -0.1),
+        (0.88, 0.0184, -0.082),
         (1.0, 0.0, -0.1),
     ],
     [
         (0.0, 0.20, 0.7),
         (0.16, 0.257, 0.0),
-        (0.47, 0.1851, -0.6),
-        (0.75, 0.0189, -0.1),
-        (0.88, 0.0221, -0.082),
+        (0.47, 0.1842, -0.6),
+        (0.75, 0.0209, -0.1),
+        (0.88, 0.0176, -0.082),
         (1.0, 0.0, -0.1),
     ],
     [
         (0.0, 0.20, 0.7),
         (0.16, 0.257, 0.0),
-        (0.47, 0.1538, -0.6),
-        (0.75, 0.0177, -0.1),
-        (0.88, 0.0192, -0.082),
+        (0.47, 0.1545, -0.6),
+        (0.75, 0.016, -0.1),
+        (0.88, 0.0174, -0.082),
         (1.0, 0.0, -0.1),
     ],
 ];
@@ -253,9 +265,9 @@ const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
 /// 28.7° and 26.7°), the trailing foot flatter at the double support, where people's ankle is
 /// still dorsiflexed, and end 79° and 75°.
 const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
-    [(0.0, 0.0, 10.0), (0.42, 5.54, 39.0), (0.68, 24.86, 112.3), (0.87, 45.35, 197.5), (1.0, 82.21, 226.5)],
-    [(0.0, 0.0, 10.0), (0.42, 4.67, 33.12), (0.68, 18.42, 122.0), (0.87, 43.59, 148.04), (1.0, 78.75, 358.26)],
-    [(0.0, 0.0, 10.0), (0.42, 5.74, 34.67), (0.68, 22.36, 152.87), (0.87, 50.38, 270.78), (1.0, 74.86, 139.06)],
+    [(0.0, 0.0, 10.0), (0.42, 7.21, 38.12), (0.68, 30.55, 112.97), (0.87, 50.8, 168.11), (1.0, 82.19, 235.78)],
+    [(0.0, 0.0, 10.0), (0.42, 4.58, 30.35), (0.68, 22.66, 126.32), (0.87, 47.32, 144.64), (1.0, 79.71, 346.51)],
+    [(0.0, 0.0, 10.0), (0.42, 5.04, 35.86), (0.68, 21.84, 156.01), (0.87, 49.36, 257.43), (1.0, 77.65, 175.17)],
 ];
 
 /// Thesis fig 6.6's shape at each of [`DESIGN_SPEEDS_MPS`]. The values of this curve, the
@@ -288,9 +300,9 @@ const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// walk's heel rise at 0.275 of the cycle (`speed_laws::heel_rise_phase`; docs/gait-model.md
 /// §12, session 18).
 const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
-    [(0.0, 0.0, 0.5), (0.316, 0.2194, 0.98), (0.632, 0.6468, 1.19), (0.842, 0.9674, 0.616), (1.0, 1.0, 0.357)],
-    [(0.0, 0.0, 0.5), (0.316, 0.2218, 0.98), (0.632, 0.5962, 1.9808), (0.842, 0.936, 0.9939), (1.0, 1.0, 0.2201)],
-    [(0.0, 0.0, 0.5), (0.316, 0.2683, 0.98), (0.632, 0.6206, 1.83), (0.842, 0.9322, 0.9052), (1.0, 1.0, 0.3777)],
+    [(0.0, 0.0, 0.5), (0.316, 0.231, 0.98), (0.632, 0.6443, 1.2631), (0.842, 0.9617, 0.503), (1.0, 1.0, 0.2109)],
+    [(0.0, 0.0, 0.5), (0.316, 0.2293, 0.98), (0.632, 0.5997, 1.8539), (0.842, 0.9344, 0.9745), (1.0, 1.0, 0.265)],
+    [(0.0, 0.0, 0.5), (0.316, 0.2641, 0.98), (0.632, 0.6217, 1.909), (0.842, 0.9331, 0.9431), (1.0, 1.0, 0.304)],
 ];
 
 /// The walking speeds (m/s) of the three designs of the swing's forward and heel-height
@@ -394,7 +406,7 @@ mod tests {
         assert!((argmax(CurveName::Shoulder) - 0.5).abs() < 0.01);
         assert!((argmax(CurveName::SwingHeelHeight) - 0.16).abs() < 0.02);
         let heel_rise = CurveName::HeelRise.default_curve();
-        assert!((heel_rise.eval(1.0) - 78.75).abs() < 1e-9);
+        assert!((heel_rise.eval(1.0) - 79.71).abs() < 1e-9);
         // The ankle's push-off peaks just after toe-off, its dorsiflexion mid-swing.
         let ankle = CurveName::SwingAnkle.default_curve();
         let argmin = (0..=1000).map(|i| i as f64 / 1000.0).min_by(|a, b| ankle.eval(*a).total_cmp(&ankle.eval(*b)));

@@ -11,7 +11,7 @@ use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
 use crate::model::speed_laws::{
     DERIVED_VERTICAL_RANGE_CM, WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm,
-    midstance_offset_cm, stance_rise, swing_lead,
+    midstance_offset_cm, obliquity_range_deg, stance_rise, swing_lead,
 };
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
@@ -501,12 +501,14 @@ impl WalkParams {
     ///   DERIVED_VERTICAL_RANGE_CM`; the thesis's Orendurff-based law asked the pelvis below
     ///   where the legs reach and bent both knees at heel strike); lateral range 6.9 cm at
     ///   0.7 m/s falling 3.44 cm per m/s (×sway), after Orendurff et al. 2004;
-    ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 7° (×sway);
+    ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 8.2° at 0.8 m/s, 7.7°/(m/s)
+    ///   more, at most 14.5° (×sway; `speed_laws::obliquity_range_deg`, the norms' own);
     /// - mid-stance drop 0.8 cm at 1.3 m/s, 3.5 cm less per m/s slower (none from 1.07 m/s
     ///   down) and 2 cm less per m/s faster: about as high as the stance leg reaches
     ///   (`speed_laws::midstance_drop_cm`);
-    /// - mid-stance offset 15 cm ahead of the heel from 1.0 to 1.3 m/s, 3.3 cm further per m/s
-    ///   faster and 5 cm nearer per m/s slower (`speed_laws::midstance_offset_cm`);
+    /// - mid-stance offset, the lowest point's share of the double support and the heel-rise
+    ///   phase: laws given at knots from 0.4 to 2.0 m/s, fitted to the speed-matched norms
+    ///   (`speed_laws::midstance_offset_cm`, `double_support_key_share`, `heel_rise_phase`);
     /// - stance rise all the way to the standing stance leg up to 0.8 m/s, none from 1.3 m/s
     ///   (`speed_laws::stance_rise`);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
@@ -557,7 +559,7 @@ impl WalkParams {
             double_support_key: double_support_key_share(v),
             swing_lead: swing_lead(v),
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
-            obliquity_range: deg(p.obliquity_range_deg.unwrap_or(7.0) * sway),
+            obliquity_range: deg(p.obliquity_range_deg.unwrap_or(obliquity_range_deg(v)) * sway),
             tilt_range: deg(p.tilt_range_deg),
             vertical_range: p.vertical_range_cm.unwrap_or(DERIVED_VERTICAL_RANGE_CM).max(0.0) / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,

@@ -88,7 +88,12 @@ impl LiveCurves {
     /// at `p_left` (it runs half a cycle behind), so each curve bends from its own present.
     pub(crate) fn change_to(&mut self, targets: [Curve; 6], p_right: f64, p_left: f64) {
         let [obliquity, rotation, tilt, lateral, shoulder, elbow] = targets;
-        self.obliquity.change_to(obliquity, p_right);
+        // The obliquity raises and lowers the hips, whose reach the pelvis keys already
+        // planned were guarded with: it changes from the next wrap, where the planner looks
+        // ahead with the curve that will play. Mid-cycle, a faster and wider walk asked in the
+        // last frames of a swing lifted the landing hip out of reach at heel strike (the
+        // norms' obliquity has the landing side up), the pelvis keys of the strike playing.
+        self.obliquity.change_to(obliquity, 1.0);
         self.rotation.change_to(rotation, p_right);
         self.tilt.change_to(tilt, p_right);
         self.lateral.change_to(lateral, p_right);
