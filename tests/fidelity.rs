@@ -318,3 +318,18 @@ fn pelvic_obliquity_follows_the_norms_shape_and_range_at_every_speed() {
         );
     }
 }
+
+/// The sway knob plays at most 20 deg of pelvic obliquity (`params::MOST_OBLIQUITY_DEG`):
+/// with the norms' 14.5 deg at 1.75 m/s, the knob's 3 asked 43 deg and bent the swing knee to
+/// 84 deg and the ankle to 32 (the norms' 63 and 10). Measured capped: 19.8 deg walked, knee
+/// peak 64.5, ankle 16.2.
+#[test]
+fn the_sway_knob_plays_no_more_obliquity_than_the_key_allows() {
+    let c = compare("configs/default.toml", &["walk.sway=3", "walk.speed_mps=1.75"]);
+    let curve = |name: &str| c.curves.iter().find(|k| k.curve == name).unwrap();
+    let obliquity = curve("pelvis_obliq_up");
+    let walked = obliquity.walk_max.0 - obliquity.walk_min.0;
+    assert!((19.0..=20.0).contains(&walked), "obliquity {walked:.1} deg peak to peak");
+    assert!(curve("knee_flex").walk_max.0 < 67.0, "knee {:?}", curve("knee_flex").walk_max);
+    assert!(curve("ankle_dorsi").walk_max.0 < 18.0, "ankle {:?}", curve("ankle_dorsi").walk_max);
+}

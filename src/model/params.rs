@@ -443,7 +443,8 @@ pub struct Resolved {
     pub(crate) swing_lead: f64,
     /// Peak-to-peak pelvic rotation (rad).
     pub(crate) rotation_range: f64,
-    /// Peak-to-peak pelvic obliquity (rad).
+    /// Peak-to-peak pelvic obliquity asked (rad): the key times the sway knob. The walk plays
+    /// at most [`MOST_OBLIQUITY_DEG`] of it.
     pub(crate) obliquity_range: f64,
     /// Peak-to-peak pelvic tilt (rad).
     pub(crate) tilt_range: f64,
@@ -484,6 +485,12 @@ pub struct Resolved {
     /// Leg IK solver settings (`[ik]`).
     pub ik: IkSettings,
 }
+
+/// The most pelvic obliquity (deg, peak to peak) a walk plays, whatever the sway knob asks:
+/// the obliquity key's own limit. With the norms' obliquity (12° at 1.3 m/s) the knob's 3 asked
+/// 36-43°, which bent the knee to 84° in swing and the ankle to 32° (the norms' 63 and 10), the
+/// legs reaching for hips that far apart in height.
+pub(crate) const MOST_OBLIQUITY_DEG: f64 = 20.0;
 
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):

@@ -10,7 +10,7 @@ use crate::model::body::Side;
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::softened_distance;
-use crate::model::params::Resolved;
+use crate::model::params::{MOST_OBLIQUITY_DEG, Resolved};
 use crate::model::terrain::Terrain;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::leg::{Footfall, LegPhase, LegState, LegTarget, SwingPlan, foot_rotation};
@@ -125,7 +125,7 @@ pub(crate) fn cycle_targets(design: &CurveSet, r: &Resolved) -> [Curve; 6] {
     let mut elbow = half(CurveName::Elbow, r.elbow_range);
     elbow.offset_y(r.elbow_min_flex + 0.5 * r.elbow_range);
     [
-        half(CurveName::PelvisObliquity, r.obliquity_range),
+        half(CurveName::PelvisObliquity, r.obliquity_range.min(MOST_OBLIQUITY_DEG.to_radians())),
         half(CurveName::PelvisRotation, r.rotation_range),
         half(CurveName::PelvisTilt, r.tilt_range),
         half(CurveName::PelvisLateral, r.lateral_range),
