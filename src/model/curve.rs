@@ -414,13 +414,17 @@ pub(crate) struct LiveCurve {
     /// start pinned to where `playing` ends. The planner looks into the next cycle (a step's
     /// reach is guarded there), and must see that curve, not this cycle's.
     next: Option<Curve>,
+    /// A change asked with [`LiveCurve::blend_to`], waiting for the next wrap.
+    blend_pending: Option<Curve>,
+    /// While a blended change plays: the curve it blends from, over this whole cycle.
+    blend_from: Option<Curve>,
 }
 
 impl LiveCurve {
     /// A live curve that plays `curve`.
     #[must_use]
     pub fn new(curve: Curve) -> Self {
-        LiveCurve { playing: curve.clone(), target: curve, next: None }
+        LiveCurve { playing: curve.clone(), target: curve, next: None, blend_pending: None, blend_from: None }
     }
 
     /// Asks for `target` while the cycle is at `x_now`: the segments still to come switch now
@@ -457,22 +461,53 @@ impl LiveCurve {
     /// last segments of the previous cycle; the first handle moves with it to keep the slope.
     /// A pinned start differs from the target's, so the change completes at a later wrap.
     pub(crate) fn wrap(&mut self) {
+        self.blend_from = None;
+        if let Some(target) = self.blend_pending.take() {
+            self.blend_from = Some(std::mem::replace(&mut self.playing, target.clone()));
+            self.target = target;
+            self.next = None;
+            return;
+        }
         if let Some(next) = self.next.take() {
             self.playing = next;
             self.next = self.after_wrap();
         }
     }
 
+    /// Asks for `target` over the whole next cycle: from the next wrap the curve played goes
+    /// from the present one to `target` by a weight easing from 0 to 1 with no step in its
+    /// first or second derivative at either end (`smootherstep`). For the curves that move a
+    /// standing hip sideways or forward, whose reach the pelvis keys already playing were
+    /// guarded for: [`Self::change_to`] switches the segments after the next at once, and a 40 %
+    /// wider side sway asked just before a wrap pushed the standing leg past its reach at the
+    /// pelvis's highest point (1.22x the steady walks' hip jerk at the norms' rotation); the
+    /// rotation's keys are 0.08 of a cycle apart, too close to take a change within one.
+    pub(crate) fn blend_to(&mut self, target: Curve) {
+        if self.blend_pending.is_none() && self.blend_from.is_none() && target == self.playing {
+            return;
+        }
+        self.blend_pending = Some(target);
+    }
+
     /// y at x of the curve being played.
     #[must_use]
     pub fn eval(&self, x: f64) -> f64 {
-        self.playing.eval(x)
+        let now = self.playing.eval(x);
+        match &self.blend_from {
+            Some(from) => {
+                let t = x.clamp(0.0, 1.0);
+                let w = t * t * t * (t * (6.0 * t - 15.0) + 10.0);
+                let before = from.eval(x);
+                before + w * (now - before)
+            }
+            None => now,
+        }
     }
 
     /// y at x of the curve that will play in the next cycle (and the ones after it).
     #[must_use]
     pub fn eval_next_cycle(&self, x: f64) -> f64 {
-        self.next.as_ref().unwrap_or(&self.playing).eval(x)
+        self.blend_pending.as_ref().or(self.next.as_ref()).unwrap_or(&self.playing).eval(x)
     }
 
     /// The curve being played.

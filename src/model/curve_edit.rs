@@ -138,9 +138,12 @@ mod tests {
         let after = drag_control_point(&before, last, (0.9, 0.8), true).unwrap();
         assert_eq!(after[0], (0.0, 0.8));
         assert_eq!(after[last], (1.0, 0.8));
+        // Both ends' handles move with them, by what the ends moved.
+        let moved = 0.8 - before[last].1;
+        assert!(moved.abs() > 0.05, "{moved}");
         assert!(
-            (after[1].1 - before[1].1 + 0.2).abs() < 1e-12
-                && (after[last - 1].1 - before[last - 1].1 + 0.2).abs() < 1e-12
+            (after[1].1 - before[1].1 - moved).abs() < 1e-12
+                && (after[last - 1].1 - before[last - 1].1 - moved).abs() < 1e-12
         );
         let turned = drag_control_point(&before, 1, (before[1].0, 1.3), true).unwrap();
         let c = Curve::from_pairs("t", &turned).unwrap();

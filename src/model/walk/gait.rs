@@ -94,9 +94,11 @@ impl LiveCurves {
         // last frames of a swing lifted the landing hip out of reach at heel strike (the
         // norms' obliquity has the landing side up), the pelvis keys of the strike playing.
         self.obliquity.change_to(obliquity, 1.0);
-        self.rotation.change_to(rotation, p_right);
+        // The rotation and the side sway move a standing hip too: blended over the next whole
+        // cycle, not switched segment by segment (see `LiveCurve::blend_to`).
+        self.rotation.blend_to(rotation);
         self.tilt.change_to(tilt, p_right);
-        self.lateral.change_to(lateral, p_right);
+        self.lateral.blend_to(lateral);
         self.shoulder[0].change_to(shoulder.clone(), p_right);
         self.shoulder[1].change_to(shoulder, p_left);
         self.elbow[0].change_to(elbow.clone(), p_right);
