@@ -133,8 +133,8 @@ const SHAPE_R_FLOOR: f64 = 0.96;
 /// left it at 0.93 cm against people's 2.49 ± 0.28. With this: 0.8 m/s 1.80 cm, hip / knee /
 /// ankle RMS 2.92 / 2.91 / 1.29 (the calibration 3.06 / 2.45 / 1.51; the loading knee 14° at
 /// 8 %, the norms' 8.3° at 12 %, the price), 1.3 m/s 2.58 cm with 1.98 / 3.12 / 1.49. Session
-/// 19, under the norms' obliquity: 0.8 m/s 0.81 -> 1.28 cm with 2.36 / 3.08 / 1.46 (the
-/// calibration 2.77 / 2.70 / 1.95), 1.3 m/s 3.06 -> 2.65 cm with 1.73 / 2.77 / 2.00.
+/// 19, under the norms' obliquity and rotation: 0.8 m/s 0.81 -> 1.63 cm with 2.59 / 3.35 / 1.50
+/// (the calibration 2.88 / 2.70 / 1.99), 1.3 m/s 3.07 -> 2.63 cm with 1.80 / 2.84 / 1.79.
 const PELVIS_SHORT_COST_PER_CM: f64 = 1.0;
 
 /// The fit's cost of one walk, and its comparison; +∞ for a walk that cannot be measured,
