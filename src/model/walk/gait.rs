@@ -83,9 +83,11 @@ impl LiveCurves {
         }
     }
 
-    /// Starts changing every curve toward `targets` (in [`cycle_targets`] order) from where
-    /// it is now: the pelvis and the right arm are at `p_right` of their cycle, the left arm
-    /// at `p_left` (it runs half a cycle behind), so each curve bends from its own present.
+    /// Starts changing every curve toward `targets` (in [`cycle_targets`] order): the tilt and
+    /// the arms from where they are now (the pelvis and the right arm at `p_right` of their
+    /// cycle, the left arm at `p_left`, half a cycle behind), each bending from its own present;
+    /// the obliquity from the next wrap; the rotation and the side sway over the whole cycle
+    /// after the next wrap.
     pub(crate) fn change_to(&mut self, targets: [Curve; 6], p_right: f64, p_left: f64) {
         let [obliquity, rotation, tilt, lateral, shoulder, elbow] = targets;
         // The obliquity raises and lowers the hips, whose reach the pelvis keys already
