@@ -596,3 +596,44 @@ fn a_live_reach_margin_change_does_not_drop_a_lifted_pelvis() {
     assert!(steady < 0.8 && keyed < 0.3, "{steady:.2} steady, {keyed:.2} keyed");
     assert!(lifted < 2.2, "{lifted:.2} mm/frame² after the change, {keyed:.2} keyed, {steady:.2} steady");
 }
+
+/// A live sway change reaches the side sway over the whole cycle after the next right heel
+/// strike (`LiveCurve::blend_to`), and `Walker::live_value` — what the lab's curve chart draws —
+/// shows that blend, while `live_curve` is already the curve it goes to: the chart had jumped to
+/// the target at the heel strike while the walk still swayed. At sway 1 -> 0 the blending
+/// cycle plays, at x = 0.31, 0.82 of the old side sway (the smootherstep weight there 0.18).
+#[test]
+fn a_live_sway_change_blends_the_side_sway_over_a_cycle_and_the_chart_shows_it() {
+    use gaitlab::model::gait_curves::CurveName;
+    let fps = 60.0;
+    let mut walker = Walker::new(&default_params()).unwrap();
+    let no_sway = config::load_text("[walk]\nsway = 0.0\n", "no sway", &[]).unwrap();
+    let old_peak = walker.live_value(CurveName::PelvisLateral, 0.31).unwrap();
+    assert!(old_peak > 0.02, "{old_peak}");
+    // Ask mid-cycle, then walk to a quarter of the next cycle.
+    let phase = |w: &Walker| w.frame(0).legs[0].phase;
+    while phase(&walker) < 0.4 {
+        walker.advance(1.0 / fps);
+    }
+    assert!(walker.set_params(&no_sway).unwrap());
+    // Nothing changes before the wrap.
+    assert!((walker.live_value(CurveName::PelvisLateral, 0.31).unwrap() - old_peak).abs() < 1e-12);
+    while phase(&walker) > 0.1 {
+        walker.advance(1.0 / fps);
+    }
+    while phase(&walker) < 0.25 {
+        walker.advance(1.0 / fps);
+    }
+    let target = walker.live_curve(CurveName::PelvisLateral).unwrap().eval(0.31);
+    let played = walker.live_value(CurveName::PelvisLateral, 0.31).unwrap();
+    assert!(target.abs() < 1e-12, "the target is no sway: {target}");
+    assert!((played / old_peak - 0.8234).abs() < 0.001, "played {played}, old {old_peak}");
+    // One whole cycle later the blend is done.
+    while phase(&walker) > 0.1 {
+        walker.advance(1.0 / fps);
+    }
+    while phase(&walker) < 0.5 {
+        walker.advance(1.0 / fps);
+    }
+    assert!(walker.live_value(CurveName::PelvisLateral, 0.31).unwrap().abs() < 1e-12);
+}

@@ -3,6 +3,7 @@
 //! cycle's end, the trajectory curves wait for the next pelvis key, and everything planned per
 //! step takes the new values from the next toe-off.
 
+use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::params::WalkParams;
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
@@ -11,6 +12,36 @@ use crate::model::walk::upper::ArmHang;
 use crate::model::walk::{ModelError, Walker};
 
 impl Walker {
+    /// A cycle curve being played, in real units (for plots): pelvis obliquity, rotation,
+    /// tilt (rad) and lateral (m); shoulder and elbow of the right arm (rad). While a change
+    /// blends over a cycle (`LiveCurve::blend_to`) this is the curve it goes to; the walk
+    /// plays [`Walker::live_value`].
+    #[must_use]
+    pub fn live_curve(&self, name: CurveName) -> Option<&Curve> {
+        self.live(name).map(LiveCurve::playing)
+    }
+
+    /// The value a cycle curve of [`Walker::live_curve`] plays at cycle phase `x` (0 to 1),
+    /// a blend under way included: the lab's chart drew the target at once while the walk
+    /// still blended for a whole cycle.
+    #[must_use]
+    pub fn live_value(&self, name: CurveName, x: f64) -> Option<f64> {
+        self.live(name).map(|c| c.eval(x))
+    }
+
+    fn live(&self, name: CurveName) -> Option<&LiveCurve> {
+        let live = &self.gait.live;
+        Some(match name {
+            CurveName::PelvisObliquity => &live.obliquity,
+            CurveName::PelvisRotation => &live.rotation,
+            CurveName::PelvisTilt => &live.tilt,
+            CurveName::PelvisLateral => &live.lateral,
+            CurveName::Shoulder => &live.shoulder[0],
+            CurveName::Elbow => &live.elbow[0],
+            _ => return None,
+        })
+    }
+
     /// Applies new parameters during the walk without a jump: cycle curves change from the
     /// segment after the one playing, trajectory curves at the next pelvis key, everything
     /// planned per step (footfalls, swing, pelvis keys) from the next toe-off. Body and

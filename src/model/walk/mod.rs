@@ -39,7 +39,7 @@ pub use pose::{bone_frame, ik_question, leg_pose, solve_leg};
 
 use crate::model::body::{Pose, Side};
 use crate::model::curve::Curve;
-use crate::model::gait_curves::{CurveName, CurveSet};
+use crate::model::gait_curves::CurveSet;
 use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
 use crate::model::params::{Resolved, WalkParams};
 use crate::model::schedule::PaceAction;
@@ -566,22 +566,6 @@ impl Walker {
     #[must_use]
     pub fn design_curves(&self) -> &CurveSet {
         &self.gait.design
-    }
-
-    /// A cycle curve being played, in real units (for plots): pelvis obliquity, rotation,
-    /// tilt (rad) and lateral (m); shoulder and elbow of the right arm (rad).
-    #[must_use]
-    pub fn live_curve(&self, name: CurveName) -> Option<&Curve> {
-        let live = &self.gait.live;
-        Some(match name {
-            CurveName::PelvisObliquity => live.obliquity.playing(),
-            CurveName::PelvisRotation => live.rotation.playing(),
-            CurveName::PelvisTilt => live.tilt.playing(),
-            CurveName::PelvisLateral => live.lateral.playing(),
-            CurveName::Shoulder => live.shoulder[0].playing(),
-            CurveName::Elbow => live.elbow[0].playing(),
-            _ => return None,
-        })
     }
 
     /// The upper body as solved this frame.

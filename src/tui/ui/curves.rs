@@ -48,10 +48,13 @@ pub fn curve_data(app: &App, view: CurveView) -> CurveData {
     let deg = 180.0 / std::f64::consts::PI;
     let live = |name: CurveName, scale: f64, x_label| {
         let c = w.live_curve(name).expect("a cycle curve");
+        // What the walk plays, a change blending over a cycle included (the control points
+        // are the curve it goes to).
+        let played = (0..=80).map(|i| f64::from(i) / 80.0).map(|x| (x, w.live_value(name, x).unwrap_or(0.0) * scale));
         CurveData {
             title: view.title(),
             x_label,
-            lines: vec![("live".into(), Color::Cyan, sample(c, scale, 0.0))],
+            lines: vec![("live".into(), Color::Cyan, played.collect())],
             control: controls(c, scale),
             cursor: Some(right_phase),
         }
