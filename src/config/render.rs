@@ -26,7 +26,18 @@ pub(crate) fn derived_comment(name: &str, value: &str) -> String {
 pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f64> {
     let d = &r.dims;
     let deg = f64::to_degrees;
-    let unsway = |x: f64| if p.walk.sway > 0.0 { x / p.walk.sway } else { x };
+    // The sway-scaled keys are shown before the knob, as they are written: at sway 0 the walk's
+    // ranges are 0 and say nothing of the key (the lab read `obliquity_range_deg 0.0` there),
+    // so the walk is resolved again at sway 1.
+    let unswayed = |x: f64, of: fn(&Resolved) -> f64| {
+        if p.walk.sway > 0.0 {
+            x / p.walk.sway
+        } else {
+            let mut at_one = p.clone();
+            at_one.walk.sway = 1.0;
+            of(&at_one.resolve())
+        }
+    };
     Some(match key {
         "body.thigh_m" => d.thigh,
         "body.shank_m" => d.shank,
@@ -42,9 +53,9 @@ pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f
         "walk.cadence_spm" => 120.0 / r.cycle_s,
         "walk.step_width_m" => r.step_width_m,
         "pelvis.rotation_range_deg" => deg(r.rotation_range),
-        "pelvis.obliquity_range_deg" => unsway(deg(r.obliquity_range)),
+        "pelvis.obliquity_range_deg" => unswayed(deg(r.obliquity_range), |r| r.obliquity_range.to_degrees()),
         "pelvis.vertical_range_cm" => r.vertical_range * 100.0,
-        "pelvis.lateral_range_cm" => unsway(r.lateral_range * 100.0),
+        "pelvis.lateral_range_cm" => unswayed(r.lateral_range * 100.0, |r| r.lateral_range * 100.0),
         "pelvis.midstance_drop_cm" => r.midstance_drop * 100.0,
         "pelvis.midstance_offset_cm" => r.midstance_offset * 100.0,
         "pelvis.stance_rise" => r.stance_rise,
@@ -156,4 +167,26 @@ fn schedule_entry(entry: &PaceEntry) -> String {
         PaceAction::Start => "start = true".to_string(),
     };
     format!("\n[[walk.schedule]]\n{when}\n{what}\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sway_scaled_keys_are_shown_before_the_knob_even_at_sway_0() {
+        let at = |sway: f64| {
+            let mut p = WalkParams::default();
+            p.walk.sway = sway;
+            let r = p.resolve();
+            ["pelvis.obliquity_range_deg", "pelvis.lateral_range_cm"].map(|k| derived_value(k, &p, &r).unwrap())
+        };
+        let one = at(1.0);
+        // 12.05 deg and 4.836 cm at 1.3 m/s, whatever the knob.
+        assert!((one[0] - 12.05).abs() < 1e-9 && (one[1] - 4.836).abs() < 1e-9, "{one:?}");
+        for sway in [0.0, 0.5, 2.0] {
+            let shown = at(sway);
+            assert!((shown[0] - one[0]).abs() < 1e-9 && (shown[1] - one[1]).abs() < 1e-9, "sway {sway}: {shown:?}");
+        }
+    }
 }
