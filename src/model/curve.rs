@@ -435,6 +435,12 @@ impl LiveCurve {
         self.next = self.after_wrap();
     }
 
+    /// Asks for `target` from the next wrap on, nothing of it in this cycle.
+    pub(crate) fn change_at_wrap(&mut self, target: Curve) {
+        self.target = target;
+        self.next = self.after_wrap();
+    }
+
     /// What the next wrap will play, when it changes anything.
     fn after_wrap(&self) -> Option<Curve> {
         (self.playing != self.target).then(|| {

@@ -183,14 +183,14 @@ impl CurveName {
 /// Pelvic rotation's unit shape: the speed-matched norms' own at 1.3 m/s
 /// (data/normative/joint_angles_by_speed.csv, the 1.30 m/s block's mean curve made
 /// antisymmetric and scaled to a unit peak), five keys a half cycle with their Bézier handles
-/// held inside the unit range the curve editor allows: RMS 0.017 of the peak, the curve
-/// peaking at 0.95. The right hip is furthest forward at 3 % of the cycle, just after heel
+/// held inside the unit range the curve editor allows: RMS 0.012 of the peak, the curve
+/// peaking at 0.96. The right hip is furthest forward at 3 % of the cycle, just after heel
 /// strike, and turns forward a second, smaller time at 20-25 %. The thesis's design (Perry &
 /// Burnfield: furthest forward at heel strike, one cosine) read r 0.68 against the norms at
-/// 1.3 m/s; this one 0.99 there, 0.92 at 1.0 and 0.64 at 0.8 m/s, where people's hip is
+/// 1.3 m/s; this one 0.997 there, 0.94 at 1.0 and 0.65 at 0.8 m/s, where people's hip is
 /// furthest forward at mid-stance (one design for every speed: the norms' slow and fast shapes
-/// drawn as speed designs made the live and pace changes turn the hip 1.3x as sharply as the
-/// steady walks, docs/gait-model.md §12, session 19).
+/// drawn as speed designs made the 0.8 -> 1.6 -> 1.0 m/s schedule turn the hip 1.37x as sharply
+/// as the steady walks, docs/gait-model.md §12, session 19).
 const PELVIS_ROTATION_KEYS: [(f64, f64, f64); 11] = [
     (0.0, 0.8894, 4.1962),
     (0.079, 0.8216, -6.7707),

@@ -444,7 +444,7 @@ pub struct Resolved {
     /// Peak-to-peak pelvic rotation (rad).
     pub(crate) rotation_range: f64,
     /// Peak-to-peak pelvic obliquity asked (rad): the key times the sway knob. The walk plays
-    /// at most [`MOST_OBLIQUITY_DEG`] of it.
+    /// [`Resolved::played_obliquity_range`].
     pub(crate) obliquity_range: f64,
     /// Peak-to-peak pelvic tilt (rad).
     pub(crate) tilt_range: f64,
@@ -491,6 +491,14 @@ pub struct Resolved {
 /// 36-43°, which bent the knee to 84° in swing and the ankle to 32° (the norms' 63 and 10), the
 /// legs reaching for hips that far apart in height.
 pub(crate) const MOST_OBLIQUITY_DEG: f64 = 20.0;
+
+impl Resolved {
+    /// The pelvic obliquity the walk plays (rad, peak to peak): the range asked, at most
+    /// [`MOST_OBLIQUITY_DEG`].
+    pub(crate) fn played_obliquity_range(&self) -> f64 {
+        self.obliquity_range.min(MOST_OBLIQUITY_DEG.to_radians())
+    }
+}
 
 impl WalkParams {
     /// Fills in the derived values. How the knobs map (v = speed in m/s, H = height in m):

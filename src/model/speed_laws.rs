@@ -1,7 +1,7 @@
 //! The laws by which the walk's speed sets the derived parameters that are measured against
 //! normal adults rather than taken from the thesis: the step (walk ratio), where the pelvis
-//! passes at mid-stance and the pelvic obliquity's range. [`crate::model::params::WalkParams::resolve`] applies them
-//! where a config leaves the key out.
+//! passes at mid-stance and the pelvic obliquity's range.
+//! [`crate::model::params::WalkParams::resolve`] applies them where a config leaves the key out.
 
 /// Walk ratio (step length over cadence) of normal adults, m/(steps/min) for a 1.75 m body,
 /// scaled with height. Sekiya & Nagasaki 1998 found it nearly constant across speeds; the

@@ -10,7 +10,7 @@ use crate::config::checks::check_curve;
 use crate::config::schema::curve_limits;
 use crate::model::curve_edit::drag_control_point;
 use crate::model::gait_curves::CurveName;
-use crate::model::params::{MOST_OBLIQUITY_DEG, WalkParams};
+use crate::model::params::WalkParams;
 
 /// A selected control point: of the curve a chart shows, by its index.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,9 +77,7 @@ impl App {
         let deg = 180.0 / std::f64::consts::PI;
         let (name, a, b) = match view {
             CurveView::PelvisRotation => (CurveName::PelvisRotation, 0.5 * r.rotation_range * deg, 0.0),
-            CurveView::PelvisObliquity => {
-                (CurveName::PelvisObliquity, 0.5 * r.obliquity_range.min(MOST_OBLIQUITY_DEG.to_radians()) * deg, 0.0)
-            }
+            CurveView::PelvisObliquity => (CurveName::PelvisObliquity, 0.5 * r.played_obliquity_range() * deg, 0.0),
             CurveView::PelvisTilt => (CurveName::PelvisTilt, 0.5 * r.tilt_range * deg, 0.0),
             CurveView::PelvisLateral => (CurveName::PelvisLateral, 0.5 * r.lateral_range * 100.0, 0.0),
             CurveView::Shoulder => (CurveName::Shoulder, 0.5 * r.shoulder_range * deg, 0.0),

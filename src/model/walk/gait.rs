@@ -10,7 +10,7 @@ use crate::model::body::Side;
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::softened_distance;
-use crate::model::params::{MOST_OBLIQUITY_DEG, Resolved};
+use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::leg::{Footfall, LegPhase, LegState, LegTarget, SwingPlan, foot_rotation};
@@ -95,7 +95,7 @@ impl LiveCurves {
         // ahead with the curve that will play. Mid-cycle, a faster and wider walk asked in the
         // last frames of a swing lifted the landing hip out of reach at heel strike (the
         // norms' obliquity has the landing side up), the pelvis keys of the strike playing.
-        self.obliquity.change_to(obliquity, 1.0);
+        self.obliquity.change_at_wrap(obliquity);
         // The rotation and the side sway move a standing hip too: blended over the next whole
         // cycle, not switched segment by segment (see `LiveCurve::blend_to`).
         self.rotation.blend_to(rotation);
@@ -129,7 +129,7 @@ pub(crate) fn cycle_targets(design: &CurveSet, r: &Resolved) -> [Curve; 6] {
     let mut elbow = half(CurveName::Elbow, r.elbow_range);
     elbow.offset_y(r.elbow_min_flex + 0.5 * r.elbow_range);
     [
-        half(CurveName::PelvisObliquity, r.obliquity_range.min(MOST_OBLIQUITY_DEG.to_radians())),
+        half(CurveName::PelvisObliquity, r.played_obliquity_range()),
         half(CurveName::PelvisRotation, r.rotation_range),
         half(CurveName::PelvisTilt, r.tilt_range),
         half(CurveName::PelvisLateral, r.lateral_range),

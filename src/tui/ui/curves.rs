@@ -31,8 +31,12 @@ pub struct CurveData {
 }
 
 fn sample(curve: &Curve, scale: f64, offset: f64) -> Vec<(f64, f64)> {
-    let (a, b) = (curve.x_start(), curve.x_end());
-    (0..=80).map(|i| a + (b - a) * f64::from(i) / 80.0).map(|x| (x, curve.eval(x) * scale + offset)).collect()
+    sample_fn(|x| curve.eval(x), (curve.x_start(), curve.x_end()), scale, offset)
+}
+
+/// `f` at 81 points over `x`, scaled and offset.
+fn sample_fn(f: impl Fn(f64) -> f64, x: (f64, f64), scale: f64, offset: f64) -> Vec<(f64, f64)> {
+    (0..=80).map(|i| x.0 + (x.1 - x.0) * f64::from(i) / 80.0).map(|x| (x, f(x) * scale + offset)).collect()
 }
 
 fn controls(curve: &Curve, scale: f64) -> Vec<(f64, f64)> {
@@ -50,11 +54,11 @@ pub fn curve_data(app: &App, view: CurveView) -> CurveData {
         let c = w.live_curve(name).expect("a cycle curve");
         // What the walk plays, a change blending over a cycle included (the control points
         // are the curve it goes to).
-        let played = (0..=80).map(|i| f64::from(i) / 80.0).map(|x| (x, w.live_value(name, x).unwrap_or(0.0) * scale));
+        let played = sample_fn(|x| w.live_value(name, x).expect("a cycle curve"), (0.0, 1.0), scale, 0.0);
         CurveData {
             title: view.title(),
             x_label,
-            lines: vec![("live".into(), Color::Cyan, played.collect())],
+            lines: vec![("live".into(), Color::Cyan, played)],
             control: controls(c, scale),
             cursor: Some(right_phase),
         }
