@@ -562,3 +562,45 @@ fn check_and_the_lab_agree_on_key_bindings() {
 fn text_of(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
+
+#[test]
+fn options_before_the_command_reach_it_or_are_refused_by_name() {
+    let config = config_path("default");
+    // A leading --set walks the command at that speed: the same bytes as the --set after it.
+    let leading = gaitlab(&["--set", "walk.speed_mps=0.8", "simulate", &config, "--cycles", "4"]);
+    let trailing = gaitlab(&["simulate", &config, "--cycles", "4", "--set", "walk.speed_mps=0.8"]);
+    let plain = gaitlab(&["simulate", &config, "--cycles", "4"]);
+    assert_eq!(leading.status.code(), Some(0), "{}", text(&leading.stderr));
+    assert_eq!(leading.stdout, trailing.stdout);
+    assert_ne!(leading.stdout, plain.stdout, "the leading --set was dropped");
+    // Both given: the command's own comes later and wins.
+    let both =
+        gaitlab(&["--set", "walk.speed_mps=1.0", "simulate", &config, "--cycles", "4", "--set", "walk.speed_mps=0.8"]);
+    assert_eq!(both.stdout, trailing.stdout);
+    // A bad leading value is located like any --set.
+    let bad = gaitlab(&["--set", "walk.speed_mps=9", "compare", &config]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(
+        text(&bad.stderr).contains("walk.speed_mps needs a number from 0.4 to 2 m/s, not 9"),
+        "{}",
+        text(&bad.stderr)
+    );
+    // The lab's own options and config mean nothing to another command: refused, not dropped.
+    for (args, says) in [
+        (
+            vec!["--fps", "10", "simulate", &config],
+            "--fps before the command is the lab's option, not read by `simulate`",
+        ),
+        (
+            vec!["--no-mouse", "compare", &config],
+            "--no-mouse before the command is the lab's option, not read by `compare`",
+        ),
+        (vec![&config, "simulate", &config], "before the command is the lab's config, not read by `simulate`"),
+        (vec!["--set", "walk.sway=0", "init"], "`init` takes no --set"),
+    ] {
+        let out = gaitlab(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(text(&out.stderr).contains(says), "{args:?}: {}", text(&out.stderr));
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
