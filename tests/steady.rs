@@ -6,6 +6,7 @@
 
 use gaitlab::analysis::steady::{self, Part, PartKind};
 use gaitlab::analysis::{self, Run};
+use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::model::walk::pace::{PaceEventKind, WalkState};
 use gaitlab::report::metrics;
 use std::path::{Path, PathBuf};
@@ -44,6 +45,12 @@ fn plateaus(parts: &[Part]) -> Vec<&Part> {
     parts.iter().filter(|p| p.kind == PartKind::Plateau).collect()
 }
 
+/// When the `n`th speed change (from 1) was asked (s).
+fn ramp_asked(run: &Run, n: usize) -> f64 {
+    let mut asked = run.pace_events.iter().filter(|e| matches!(e.kind, PaceEventKind::SpeedAsked(_)));
+    asked.nth(n - 1).expect("a speed asked for each plateau after the first").time_s
+}
+
 #[test]
 fn each_plateau_is_measured_after_its_speed_was_reached_and_within_3_percent() {
     let dir = temp("plateaus");
@@ -73,8 +80,21 @@ fn each_plateau_is_measured_after_its_speed_was_reached_and_within_3_percent() {
             assert_eq!(ramp.kind, PartKind::SpeedChange);
             // Both heel strikes that take a step of the ramp, and the one the cadence blend
             // after it ends at (a gait cycle after the reaching strike), are the speed
-            // change's, not the plateau's; the plateau starts at the blend's end.
-            assert_eq!(ramp.steps.len(), 3, "heel strikes in the speed change: {:?}", ramp.steps);
+            // change's, not the plateau's; the plateau starts at the blend's end. A speed
+            // asked during a swing waits for the next toe-off to plan with it: the strike
+            // that swing lands at takes no step of the ramp and is the change's too.
+            let asked = ramp_asked(&run, n);
+            let first_strike = run.frames[ramp.steps[0]].time_s;
+            let planned = run.frames.windows(2).any(|w| {
+                (asked..first_strike).contains(&w[1].time_s)
+                    && w[1]
+                        .legs
+                        .iter()
+                        .zip(&w[0].legs)
+                        .any(|(b, a)| b.leg_phase == LegPhase::Swing && a.leg_phase != LegPhase::Swing)
+            });
+            let waited = usize::from(!planned);
+            assert_eq!(ramp.steps.len(), 3 + waited, "heel strikes in the speed change: {:?}", ramp.steps);
             assert_eq!(p.steps[0], p.first, "a plateau starts at a heel strike");
         }
     }

@@ -6,6 +6,7 @@ use crate::config::render::{derived_value, toml_number};
 use crate::config::schema::{Kind, PARAMS, ParamSpec, Value};
 use crate::config::{self, Loader};
 use crate::model::params::WalkParams;
+use crate::model::walk::pace::WalkState;
 
 impl App {
     pub(super) fn jump_group(&mut self, forward: bool) {
@@ -120,10 +121,34 @@ impl App {
         }
     }
 
-    /// Puts `params` in force: live on the walk where the model allows, else a restart.
-    pub(super) fn apply(&mut self, params: WalkParams, what: String, record: bool) {
+    /// Puts `params` in force: live on the walk where the model allows, else a restart. A new
+    /// speed is walked over [`crate::model::walk::pace::RAMP_STEPS`] steps, as the pace keys and a schedule walk it: set
+    /// at once it switched cadence and forward speed within a frame (1.8 -> 0.8 m/s: the
+    /// pelvis's velocity change per frame 3.4-4.9x a steady walk's, the knee 1.5x as fast).
+    pub(super) fn apply(&mut self, params: WalkParams, mut what: String, record: bool) {
         let before = std::mem::replace(&mut self.params, params.clone());
-        match self.walker.set_params(&params) {
+        let walked_speed = self.walker.params().walk.speed_mps;
+        let mut ramp = self.walker.walk_state() == WalkState::Walking && params.walk.speed_mps != walked_speed;
+        let live = if ramp {
+            // Everything else now, at the speed being walked; the speed then over the steps.
+            // Keys that make no walk at the old speed are taken with the new one at once.
+            let mut now = params.clone();
+            now.walk.speed_mps = walked_speed;
+            match self.walker.set_params(&now) {
+                Err(_) => {
+                    ramp = false;
+                    self.walker.set_params(&params)
+                }
+                live => live,
+            }
+        } else {
+            self.walker.set_params(&params)
+        };
+        match live {
+            Ok(true) if ramp => {
+                self.walker.request_speed(params.walk.speed_mps);
+                what.push_str(", reached over two steps");
+            }
             Ok(true) => {}
             Ok(false) => self.restart(),
             Err(e) => {

@@ -51,6 +51,7 @@ impl Walker {
     /// swing [6.3.2].
     pub(super) fn plan_step(&mut self, side: Side, at: f64, toe_off_pose: &LegPose) {
         let i = side.index();
+        self.pace.ramp_planned |= self.pace.ramp.is_some();
         // The step is planned with the toe-off its leg froze at heel rise (a pace change at
         // the heel strike between may have moved the walk's).
         let walk_toe_off = self.gait.r.toe_off;
@@ -167,6 +168,7 @@ impl Walker {
         }
         let from = self.params.walk.speed_mps;
         self.pace.ramp = Some((from, to, 0));
+        self.pace.ramp_planned = false;
         self.pace.events.push(PaceEvent { time_s: self.time_s, kind: PaceEventKind::SpeedAsked(to) });
     }
 
@@ -249,6 +251,9 @@ impl Walker {
     /// At a heel strike (master phase `at`): takes the next step of a speed change.
     pub(super) fn pace_at_heel_strike(&mut self, at: f64) {
         let Some((from, to, done)) = self.pace.ramp else { return };
+        if !self.pace.ramp_planned {
+            return;
+        }
         let done = done + 1;
         let speed = from + (to - from) * f64::from(done) / f64::from(RAMP_STEPS);
         self.apply_speed(speed, at);

@@ -132,6 +132,13 @@ pub(crate) struct Pace {
     pub(crate) next: usize,
     /// A speed change under way: from, to, steps taken of [`RAMP_STEPS`].
     pub(crate) ramp: Option<(f64, f64, u32)>,
+    /// Whether a toe-off has planned its step since the ramp was asked: only then does a heel
+    /// strike take a step of it. The step landing is planned at its toe-off with the ramp's
+    /// coming pace (its mid-stance offset, drop and pace); a speed asked during the swing and
+    /// taken at its heel strike landed a step planned for the old speed (the lab's 1.0 -> 0.8
+    /// m/s edit a frame before a heel strike: the pelvis's velocity change per frame 1.81x a
+    /// steady walk's).
+    pub(crate) ramp_planned: bool,
     /// The cadence blend under way: the phase it began at, the cycle duration (s) and its
     /// slope (s per cycle) it began with; over [`super::pace::CADENCE_BLEND_CYCLES`] the
     /// duration goes to the walk's on a cubic Hermite.
@@ -153,6 +160,7 @@ impl Pace {
             entries: entries.to_vec(),
             next: 0,
             ramp: None,
+            ramp_planned: false,
             rate_from: None,
             stop: if standing { StopStage::Standing { final_step: -1 } } else { StopStage::None },
             start: StartStage::None,
