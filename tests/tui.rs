@@ -1,11 +1,14 @@
 //! The terminal lab: screens rendered into ratatui's `TestBackend` (insta snapshots of the
 //! text), key scripts driven into the app, and the real binary in a pseudo-terminal.
 
+mod lab_state;
+
 use gaitlab::config::schema::PARAMS;
 use gaitlab::model::gait_curves::CurveName;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::tui::app::{App, Overlay, Panel};
-use gaitlab::tui::{load_app, ui};
+use gaitlab::tui::ui;
+use lab_state::load_app;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};

@@ -2,10 +2,13 @@
 //! with keys, the constraints kept or the move refused, the walk changed live, the curve
 //! saved as a `[curves.*]` override; and the mouse on the parameter editor and the tabs.
 
+mod lab_state;
+
 use gaitlab::config::schema::PARAMS;
 use gaitlab::model::gait_curves::CurveName;
 use gaitlab::tui::app::{App, CurveView, Msg, Panel};
-use gaitlab::tui::{effects, load_app, ui};
+use gaitlab::tui::{effects, ui};
+use lab_state::load_app;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};

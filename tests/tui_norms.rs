@@ -1,10 +1,13 @@
 //! The lab's joint panel against measured adults: `n` draws the normative mean ± 1 SD behind
 //! the walk's joint traces (issue 12, point 3), at every size the panel appears at.
 
+mod lab_state;
+
 use gaitlab::tui::app::{App, Overlay, Panel};
 use gaitlab::tui::keys::Action;
+use gaitlab::tui::ui;
 use gaitlab::tui::ui::curves::{NORMS_BAND, NORMS_SOURCE};
-use gaitlab::tui::{load_app, ui};
+use lab_state::load_app;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;

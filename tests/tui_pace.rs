@@ -3,9 +3,12 @@
 //! standing, sets off; the status line says whether the walk is standing, starting, walking or
 //! stopping.
 
+mod lab_state;
+
 use gaitlab::model::walk::pace::WalkState;
 use gaitlab::tui::app::App;
-use gaitlab::tui::{load_app, ui};
+use gaitlab::tui::ui;
+use lab_state::load_app;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};

@@ -3,6 +3,8 @@
 //! at once, a 1.8 -> 0.8 m/s edit switched cadence and speed within a frame and the knee
 //! jumped 4.6 -> 19.8° at the next toe-off (joint speeds 1.34-1.48x the steady walks').
 
+mod lab_state;
+
 // Shared with the pace tests, which use more of them.
 #[allow(dead_code)]
 mod common;
@@ -12,7 +14,7 @@ mod pace_common;
 use common::{max_speed_changes, max_steps};
 use gaitlab::config::schema::PARAMS;
 use gaitlab::tui::app::App;
-use gaitlab::tui::load_app;
+use lab_state::load_app;
 use pace_common::{max_pelvis_velocity_jump, steady_peaks};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 

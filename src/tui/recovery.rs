@@ -10,7 +10,20 @@
 //! The saved config itself is never touched.
 
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 use std::time::SystemTime;
+
+/// The state folder [`use_state_folder`] set for this process, if any.
+static STATE_FOLDER: OnceLock<PathBuf> = OnceLock::new();
+
+/// Keeps the embedded default's recovery under `folder` instead of the user's state folder,
+/// for the rest of the process (the first call wins). The lab's tests open the embedded
+/// default in-process: a recovery file the developer's own lab left behind (a hang-up with
+/// unsaved edits) opened its overlay in front of every one of them and failed a dozen.
+#[doc(hidden)]
+pub fn use_state_folder(folder: PathBuf) {
+    let _ = STATE_FOLDER.set(folder);
+}
 
 /// The suffix added to the config's file name.
 pub(crate) const SUFFIX: &str = ".recovery";
@@ -25,10 +38,11 @@ pub(crate) fn path_for(config: Option<&Path>) -> Option<PathBuf> {
             Some(path.with_file_name(format!("{name}{SUFFIX}")))
         }
         None => {
-            let state =
+            let state = STATE_FOLDER.get().cloned().or_else(|| {
                 std::env::var_os("XDG_STATE_HOME").filter(|v| !v.is_empty()).map(PathBuf::from).or_else(|| {
                     std::env::var_os("HOME").filter(|v| !v.is_empty()).map(|h| Path::new(&h).join(".local/state"))
-                })?;
+                })
+            })?;
             Some(state.join("gaitlab").join(format!("embedded-default.toml{SUFFIX}")))
         }
     }
