@@ -129,8 +129,9 @@ impl CurveName {
                 (1.0, 0.5, -8.0),
             ],
             // Saunders, Inman & Eberhart 1953: a smooth sinusoid-like fall from the mid-stance
-            // maximum to the double-support minimum, level at both ends.
-            CurveName::PelvisVertical => &[(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)],
+            // maximum to the double-support minimum, level at both ends; drawn at three speeds
+            // ([`PELVIS_VERTICAL_KEYS`]).
+            CurveName::PelvisVertical => &PELVIS_VERTICAL_KEYS[1],
             CurveName::PelvisVerticalDsMs => &PELVIS_RISE_KEYS,
             // Orendurff et al. 2004: one sway a cycle over the stance foot, furthest right at
             // right mid-stance (0.31), crossing the midline at mid double support (0.06 / 0.56).
@@ -234,6 +235,22 @@ const PELVIS_OBLIQUITY_KEYS: [(f64, f64, f64); 7] = [
 /// Drawn at each speed too (0.50 of the way at 0.8 m/s, 0.32 at 1.6), it gained 0.1 deg of
 /// knee at 0.8 m/s and took the scheduled 0.8 -> 1.6 -> 1.0 m/s walk's pelvis velocity
 /// change to 1.23x the steady walks' (the issue-14 bound is 1.2x): one design.
+/// The fall from mid-stance into double support at each of [`DESIGN_SPEEDS_MPS`]. The
+/// comfortable and fast walks keep the thesis's smooth fall (the keys are the smoothstep's own:
+/// halfway at half the segment, slope 1.5). The slow walk holds its height longer and falls
+/// late and steeply, as people's pelvis does at 0.8 m/s (data/normative/pelvis_vertical_by_
+/// speed.csv's adults: highest at 28-36 % of the cycle, lowest at 4 %, 2.5 cm apart); fitted in
+/// session 20 with the slow swing and heel-rise designs and the 0.8 m/s knots, the walked
+/// range held at 2.0 cm (docs/gait-model.md §12). With the smooth fall the slow walk's pelvis
+/// passed its highest point at 20 % and fell through late stance, and no placement of it
+/// moved its range past 1.2 cm without flexing the knee 5-8° off the norms (knee RMS 3.5 at
+/// 1.21 cm, 6.1 at 2.08).
+const PELVIS_VERTICAL_KEYS: [[(f64, f64, f64); 3]; 3] = [
+    [(0.0, 0.0, 0.0), (0.5, 0.4704, 2.81), (1.0, 1.0, 0.0)],
+    [(0.0, 0.0, 0.0), (0.5, 0.5, 1.5), (1.0, 1.0, 0.0)],
+    [(0.0, 0.0, 0.0), (0.5, 0.5, 1.5), (1.0, 1.0, 0.0)],
+];
+
 const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
 
 /// Thesis fig 6.10's shape, first drawn from the normative walk's heel (data/normative/
@@ -251,8 +268,8 @@ const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
     [
         (0.0, 0.20, 0.7),
         (0.16, 0.257, 0.0),
-        (0.47, 0.1247, -0.6),
-        (0.75, 0.0181, -0.1),
+        (0.47, 0.1397, -0.6),
+        (0.75, 0.0235, -0.1),
         (0.88, 0.0184, -0.082),
         (1.0, 0.0, -0.1),
     ],
@@ -287,7 +304,13 @@ const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
 /// 28.7° and 26.7°), the trailing foot flatter at the double support, where people's ankle is
 /// still dorsiflexed, and end 79° and 75°.
 const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
-    [(0.0, 0.0, 10.0), (0.42, 7.21, 38.12), (0.68, 30.55, 112.97), (0.87, 50.8, 168.11), (1.0, 82.19, 235.78)],
+    [
+        (0.0, 0.0, 10.0),
+        (0.42, 1.4135, 0.0947),
+        (0.68, 15.0145, 110.5724),
+        (0.87, 36.7207, 168.11),
+        (1.0, 82.19, 235.78),
+    ],
     [(0.0, 0.0, 10.0), (0.42, 4.58, 30.35), (0.68, 22.66, 126.32), (0.87, 47.32, 144.64), (1.0, 79.71, 346.51)],
     [(0.0, 0.0, 10.0), (0.42, 5.04, 35.86), (0.68, 21.84, 156.01), (0.87, 49.36, 257.43), (1.0, 77.65, 175.17)],
 ];
@@ -322,13 +345,13 @@ const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// walk's heel rise at 0.275 of the cycle (`speed_laws::heel_rise_phase`; docs/gait-model.md
 /// §12, session 18).
 const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
-    [(0.0, 0.0, 0.5), (0.316, 0.231, 0.98), (0.632, 0.6443, 1.2631), (0.842, 0.9617, 0.503), (1.0, 1.0, 0.2109)],
+    [(0.0, 0.0, 0.5), (0.316, 0.1824, 0.98), (0.632, 0.5785, 1.2631), (0.842, 0.9606, 0.503), (1.0, 1.0, 0.0238)],
     [(0.0, 0.0, 0.5), (0.316, 0.2293, 0.98), (0.632, 0.5997, 1.8539), (0.842, 0.9344, 0.9745), (1.0, 1.0, 0.265)],
     [(0.0, 0.0, 0.5), (0.316, 0.2641, 0.98), (0.632, 0.6217, 1.909), (0.842, 0.9331, 0.9431), (1.0, 1.0, 0.304)],
 ];
 
 /// The walking speeds (m/s) of the three designs of the swing's forward and heel-height
-/// curves and the heel rise: slow, comfortable and fast. Between two the keys are blended linearly by speed (a Hermite curve is linear in
+/// curves, the heel rise and the pelvis's fall into double support: slow, comfortable and fast. Between two the keys are blended linearly by speed (a Hermite curve is linear in
 /// its keys' values and slopes, so the curve is the same blend of the two); outside, the end
 /// design. Why three: each was fitted to the speed-matched norms at its speed
 /// (docs/gait-model.md §12, session 15), and the slow walk's and the fast walk's differ in
@@ -344,6 +367,7 @@ impl CurveName {
             CurveName::SwingForward => SWING_FORWARD_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::SwingHeelHeight => SWING_HEEL_HEIGHT_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::HeelRise => HEEL_RISE_KEYS.each_ref().map(|k| k.as_slice()),
+            CurveName::PelvisVertical => PELVIS_VERTICAL_KEYS.each_ref().map(|k| k.as_slice()),
             _ => return self.default_curve(),
         };
         let [slow, comfortable, fast] = DESIGN_SPEEDS_MPS;

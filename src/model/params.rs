@@ -10,8 +10,8 @@ use crate::model::ik::settings::GradientSettings;
 use crate::model::ik::{IkSettings, IkSolverKind, JacobianVariant, JointLimits};
 use crate::model::schedule::PaceEntry;
 use crate::model::speed_laws::{
-    DERIVED_VERTICAL_RANGE_CM, WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm,
-    midstance_offset_cm, obliquity_range_deg, stance_rise, swing_lead,
+    WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm, midstance_offset_cm,
+    obliquity_range_deg, stance_rise, swing_lead, vertical_range_cm,
 };
 use crate::model::terrain::TerrainKind;
 use std::collections::BTreeMap;
@@ -511,10 +511,10 @@ impl WalkParams {
     /// - step width 0.10 m at 1.3 m/s, 2 cm narrower per 1 m/s faster (≥ 0.05 m);
     /// - toe-off at 0.62 of the cycle at 1.3 m/s, 0.04 earlier per 1 m/s faster (double
     ///   support shrinks with speed);
-    /// - pelvis vertical range asked: none, so the double support is as high as the legs reach
-    ///   and the walked range is what their reach gives (`speed_laws::
-    ///   DERIVED_VERTICAL_RANGE_CM`; the thesis's Orendurff-based law asked the pelvis below
-    ///   where the legs reach and bent both knees at heel strike); lateral range 6.9 cm at
+    /// - pelvis vertical range asked: from 1.3 m/s none, the double support as high as the legs
+    ///   reach; slower 1.05-1.3 cm, with the slow walk's late fall into double support
+    ///   (`speed_laws::vertical_range_cm`; the thesis's Orendurff-based law asked the pelvis
+    ///   below where the legs reach at every speed and bent both knees); lateral range 6.9 cm at
     ///   0.7 m/s falling 3.44 cm per m/s (×sway), after Orendurff et al. 2004;
     ///   rotation 6° + 3.3°/(m/s) above 0.7 m/s; obliquity 8.2° at 0.8 m/s, 7.7°/(m/s)
     ///   more, at most 14.5° (×sway; `speed_laws::obliquity_range_deg`, the norms' own);
@@ -576,7 +576,7 @@ impl WalkParams {
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(obliquity_range_deg(v)) * sway),
             tilt_range: deg(p.tilt_range_deg),
-            vertical_range: p.vertical_range_cm.unwrap_or(DERIVED_VERTICAL_RANGE_CM).max(0.0) / 100.0,
+            vertical_range: p.vertical_range_cm.unwrap_or(vertical_range_cm(v)).max(0.0) / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
             midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v)) / 100.0,

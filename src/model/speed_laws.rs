@@ -45,7 +45,10 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// pelvic obliquity (a fixed 7°, the landing hip dropped at heel strike); session 19 fitted them
 /// again under the norms' own obliquity ([`obliquity_range_deg`]), whose landing hip is up at
 /// heel strike, so that the double support sits lower and the mid-stance further ahead
-/// (12.4 cm at 1.3 m/s, 16.2 at 0.8). Fitted on the joint curves alone the pelvis had stood
+/// (12.4 cm at 1.3 m/s, 16.2 at 0.8). Session 20 fitted the 0.8 and 1.0 m/s knots again with
+/// the slow walk's late fall into double support (`gait_curves::PELVIS_VERTICAL_KEYS`,
+/// [`vertical_range_cm`]): 12.23 and 11.43 cm, the heel rise 0.322 and 0.329, the walked range
+/// 0.81 -> 1.99 cm at 0.8 m/s (docs/gait-model.md §12). Fitted on the joint curves alone the pelvis had stood
 /// 15 cm ahead of the heel at 1.3 m/s with a walked range of 1.9 cm against people's 3.6 ±
 /// 1.6. The knots at 1.0 and 1.15 m/s are fitted over 9 speeds from 0.85 to 1.25 m/s
 /// together, the heel rise at most 0.312 there: fitted at one speed alone, the walks either
@@ -69,8 +72,8 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
     through_knots(&DOUBLE_SUPPORT_KEY_SHARE_KNOTS, speed_mps)
 }
 
-/// The vertical range a config that leaves `pelvis.vertical_range_cm` out asks for: none, so
-/// the double support is asked at the mid-stance height and the reach guard lowers it until
+/// The vertical range a config that leaves `pelvis.vertical_range_cm` out asks for at
+/// `speed_mps`: from 1.0 m/s none, so the double support is asked at the mid-stance height and the reach guard lowers it until
 /// both legs reach; the walked range is then what the legs' reach gives. The thesis's law
 /// (1.9 + 1.5 (v − 0.7) cm, 2.8 at 1.3 m/s) asked the pelvis below where the legs reach at
 /// every speed up to 1.3 m/s, and each centimetre it sat lower bent both knees at heel
@@ -83,11 +86,18 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// theirs (docs/gait-model.md §12). Session 18's placement of the pelvis over the foot
 /// ([`midstance_offset_cm`]) took the walked range to 3.0 / 3.6 cm at 1.3 / 1.6 m/s with the
 /// double support still as high as the legs reach; session 19's, under the norms' obliquity,
-/// to 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8).
-pub(crate) const DERIVED_VERTICAL_RANGE_CM: f64 = 0.0;
+/// to 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8). Slower, the walk asks the double support
+/// 1.05 cm (0.8 m/s and slower) to 1.3 cm (1.0 m/s) under its mid-stance, none again from 1.3
+/// m/s (linear between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in
+/// session 20 with the slow designs (`gait_curves`), whose pelvis holds its height through
+/// late stance and falls late into double support, as people's does; the walked range at 0.8
+/// m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50).
+pub(crate) fn vertical_range_cm(speed_mps: f64) -> f64 {
+    through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps)
+}
 
 /// The cycle phase at which the stance heel rises at `speed_mps`: linear between
-/// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.31.
+/// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.329.
 /// Bounded where the fit would go later or sooner: at 1.3 m/s the fit took 0.318 (knee RMS 0.3°
 /// better than 0.30), but then the stance leg stands straight at its reach through the
 /// pelvis's highest point before its heel rises, and a live `walk.sway` edit there (its wider
@@ -142,7 +152,10 @@ pub(crate) fn obliquity_range_deg(speed_mps: f64) -> f64 {
 
 /// (speed m/s, cm) knots of [`midstance_offset_cm`].
 const MIDSTANCE_OFFSET_CM_KNOTS: [(f64, f64); 8] =
-    [(0.4, 12.0), (0.8, 16.2), (1.0, 12.67), (1.15, 12.12), (1.3, 12.36), (1.6, 14.3), (1.75, 14.29), (2.0, 14.29)];
+    [(0.4, 12.0), (0.8, 12.23), (1.0, 11.43), (1.15, 12.12), (1.3, 12.36), (1.6, 14.3), (1.75, 14.29), (2.0, 14.29)];
+
+/// (speed m/s, cm) knots of [`vertical_range_cm`].
+const VERTICAL_RANGE_CM_KNOTS: [(f64, f64); 4] = [(0.8, 1.05), (1.0, 1.3), (1.3, 0.0), (2.0, 0.0)];
 
 /// (speed m/s, share of the double support) knots of [`double_support_key_share`].
 const DOUBLE_SUPPORT_KEY_SHARE_KNOTS: [(f64, f64); 8] =
@@ -150,7 +163,7 @@ const DOUBLE_SUPPORT_KEY_SHARE_KNOTS: [(f64, f64); 8] =
 
 /// (speed m/s, cycle phase) knots of [`heel_rise_phase`].
 const HEEL_RISE_PHASE_KNOTS: [(f64, f64); 8] =
-    [(0.4, 0.31), (0.8, 0.31), (1.0, 0.312), (1.15, 0.305), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293), (2.0, 0.293)];
+    [(0.4, 0.31), (0.8, 0.322), (1.0, 0.329), (1.15, 0.305), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293), (2.0, 0.293)];
 
 /// The value at `speed_mps` of a law given at `knots` (speeds increasing): linear between
 /// two, the end value outside.
@@ -182,20 +195,23 @@ mod tests {
         {
             assert!(close(double_support_key_share(v), share), "{v}: {}", double_support_key_share(v));
         }
-        for (v, phase) in [(0.8, 0.31), (1.0, 0.312), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293)] {
+        for (v, phase) in [(0.6, 0.316), (0.8, 0.322), (1.0, 0.329), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293)] {
             assert!(close(heel_rise_phase(v), phase), "{v}: {}", heel_rise_phase(v));
         }
         for (v, cm) in [
             (0.3, 12.0),
-            (0.6, 14.1),
-            (0.8, 16.2),
-            (1.0, 12.67),
+            (0.6, 12.115),
+            (0.8, 12.23),
+            (1.0, 11.43),
             (1.3, 12.36),
             (1.45, 13.33),
             (1.6, 14.3),
             (2.0, 14.29),
         ] {
             assert!(close(midstance_offset_cm(v), cm), "{v}: {}", midstance_offset_cm(v));
+        }
+        for (v, cm) in [(0.5, 1.05), (0.8, 1.05), (0.9, 1.175), (1.0, 1.3), (1.15, 0.65), (1.3, 0.0), (1.6, 0.0)] {
+            assert!(close(vertical_range_cm(v), cm), "{v}: {}", vertical_range_cm(v));
         }
         for (v, drop) in [(0.9, 0.0), (1.3, 0.8), (1.6, 0.2), (1.75, 0.0)] {
             assert!(close(midstance_drop_cm(v), drop), "{v}: {}", midstance_drop_cm(v));

@@ -108,10 +108,13 @@ fn standing_distance(r: &Resolved, q: f64, heel_rise: f64) -> f64 {
 /// How wide (m) the lift's bends are where a cap takes over: with a hard `min` and `max` the
 /// pelvis turned a corner as a trailing foot's cap rose through the keyed height (the largest
 /// vertical acceleration at 0.8 m/s for a heel rise at 0.35 / 0.37 of the cycle 5.5 / 3.6
-/// m/s², rounded 4.3 / 2.8; at the default heel rise the cap never binds).
-const CAP_BEND_M: f64 = 0.0005;
+/// m/s², rounded over 0.5 mm 4.3 / 2.8). Session 20's slow walk falls later and more steeply
+/// into double support and rises out of it as the other leg's lift ramps in: over 0.5 mm a
+/// heel rise at 0.33 / 0.35 / 0.37 turned 5.6 / 9.0 / 6.3 m/s², over 2 mm 3.2 / 4.4 / 3.0, over
+/// 3 mm 3.3 / 2.8 / 1.9 (the default 0.322's own 3.4, its joint curves unchanged).
+const CAP_BEND_M: f64 = 0.003;
 
-/// `max(x, 0)` with its corner rounded over [`CAP_BEND_M`]: ln(1 + eˣ) scaled (0.35 mm at 0).
+/// `max(x, 0)` with its corner rounded over [`CAP_BEND_M`]: ln(1 + eˣ) scaled (2.1 mm at 0).
 fn soft_positive(x: f64) -> f64 {
     let u = x / CAP_BEND_M;
     if u > 30.0 { x } else { CAP_BEND_M * u.exp().ln_1p() }
