@@ -275,11 +275,14 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // 0.29 / 0.60 / 0.83 / 0.78 of people's; at 1.3 and 1.6 m/s inside their mean ± 1 SD
     // (3.59 ± 1.58, 4.53 ± 1.63), held here. Session 19, with the norms' pelvic obliquity (the
     // landing hip up at heel strike, so the double support lower) and rotation: 0.68 / 1.85 /
-    // 3.07 / 3.71 cm (compare's figure).
-    // The slow walks' gap is issue 12's, open.
+    // 3.07 / 3.71 cm (compare's figure). Session 20, the slow walk's pelvis falling late into
+    // double support (`gait_curves::PELVIS_VERTICAL_KEYS`): 1.51 / 1.97 / 2.18 / 3.04 / 3.67 cm
+    // at 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s (this test's cycle; compare's 1.54 / 1.99 / 2.20 / 3.07
+    // / 3.71), from 0.8 m/s inside people's mean ± 2 SD (0.78 / 0.75 of their mean at 0.8 / 1.0),
+    // held here; at 0.7 m/s (no norms that slow) 0.61 of the 0.77 m/s adults'.
     let people = gaitlab::normative::PelvisNorms::built_in();
-    let mut previous: Option<(f64, f64)> = None;
-    for (speed, least_share) in [(0.7, 0.25), (1.0, 0.55), (1.3, 0.75), (1.6, 0.70)] {
+    let mut previous: Option<(f64, f64, f64)> = None;
+    for (speed, least_share) in [(0.7, 0.55), (0.8, 0.7), (1.0, 0.7), (1.3, 0.75), (1.6, 0.70)] {
         let set = format!("walk.speed_mps={speed}");
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[set]).unwrap();
@@ -295,10 +298,22 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
         if speed >= 1.3 {
             assert!(vertical >= measured - sd, "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}");
         }
-        if let Some((v0, l0)) = previous {
-            assert!(vertical > v0 + 0.4 && lateral < l0 - 0.5, "{speed} m/s: {vertical} {lateral} after {v0} {l0}");
+        if speed >= 0.8 {
+            assert!(
+                vertical >= measured - 2.0 * sd,
+                "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}"
+            );
         }
-        previous = Some((vertical, lateral));
+        if let Some((v0, l0, s0)) = previous {
+            // Rising with speed, falling sideways: each at least half a centimetre per m/s and
+            // 1.6 cm per m/s (Orendurff's lateral falls 3.44).
+            let dv = speed - s0;
+            assert!(
+                vertical > v0 + 0.5 * dv && lateral < l0 - 1.6 * dv,
+                "{speed} m/s: {vertical} {lateral} after {v0} {l0}"
+            );
+        }
+        previous = Some((vertical, lateral, speed));
     }
 }
 
