@@ -562,10 +562,11 @@ fn the_stance_rise_keeps_both_feet_and_takes_no_corner() {
 /// pelvis's vertical speed from the change on, mm a frame per frame): read live 4.23, frozen
 /// 2.03, against the same walk's own 0.66 without a change and 0.20 for the keyed walk with it.
 /// What is left comes with the keys the change re-guards; held here below 2.2. Session 20's
-/// slow walk (its pelvis falling late and steeply into double support, the double support
-/// asked 1 cm under the mid-stance) takes the change worse: 6.41 lifted, 3.02 keyed, 0.94
-/// steady (2.03 / 0.19 / 0.66 before); the keyed walk re-guarded on the smooth fall reads 1.81.
-/// A ratchet on those, not a bound the walk meets well (noted for a later session).
+/// slow walk (its pelvis falling late and steeply into double support, its heel rising at 0.322
+/// of the cycle, past the mid-stance key's 0.32) first read 6.41 lifted and 3.02 keyed: the
+/// guard lowered the coming double support 9.4 cm for a 3.4 mm deficit just past the key,
+/// where that key hardly moves the pelvis (`reach_guard`'s `MOVING_WEIGHT`). Now 2.20 lifted,
+/// 0.71 keyed, 0.94 steady (the keyed walk's own 0.50: the steeper fall).
 #[test]
 fn a_live_reach_margin_change_does_not_drop_a_lifted_pelvis() {
     // The largest change of the pelvis's vertical speed (mm a frame, per frame) from the change
@@ -597,8 +598,8 @@ fn a_live_reach_margin_change_does_not_drop_a_lifted_pelvis() {
     let lifted = worst(slow, Some(change));
     let steady = worst(slow, None);
     let keyed = worst(&format!("{slow}[pelvis]\nstance_rise = 0.0\n"), Some(change));
-    assert!(steady < 1.0 && keyed < 3.2, "{steady:.2} steady, {keyed:.2} keyed");
-    assert!(lifted < 6.6, "{lifted:.2} mm/frame² after the change, {keyed:.2} keyed, {steady:.2} steady");
+    assert!(steady < 1.0 && keyed < 0.8, "{steady:.2} steady, {keyed:.2} keyed");
+    assert!(lifted < 2.4, "{lifted:.2} mm/frame² after the change, {keyed:.2} keyed, {steady:.2} steady");
 }
 
 /// A live sway change reaches the side sway over the whole cycle after the next right heel

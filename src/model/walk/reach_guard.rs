@@ -272,8 +272,14 @@ impl Walker {
                     choice = Some((key.kind, weight));
                 }
             }
-            let Some((kind, weight)) = choice else { continue };
-            let need = deficit / weight.max(0.25) + 1e-4;
+            // A key that hardly moves the pelvis at the deficit's instant cannot take it away:
+            // lowered by four times the deficit on each of the guard's passes it sank the
+            // coming double support 9.4 cm for a 3.4 mm deficit just past the mid-stance key (a
+            // live `ik.reach_margin` change at 0.8 m/s, the stance's last sample past the key
+            // once its heel rise, 0.322 of the cycle, passed the key's 0.32). Such a deficit is
+            // the standing heel's to take (`rise_heel_where_out_of_reach`).
+            let Some((kind, weight)) = choice.filter(|&(_, w)| w >= MOVING_WEIGHT) else { continue };
+            let need = deficit / weight + 1e-4;
             if worst.is_none_or(|(w, _)| need > w) {
                 worst = Some((need, kind));
             }
@@ -337,6 +343,10 @@ fn reach_top(hip: DVec3, ankle: DVec3, limit: f64) -> Option<f64> {
     let horizontal = (d.x * d.x + d.z * d.z).sqrt();
     (horizontal < limit).then(|| ankle.y + (limit * limit - horizontal * horizontal).sqrt())
 }
+
+/// The least share of a key's move the pelvis makes at an instant for the guard to lower that
+/// key for a deficit there ([`Walker::key_to_lower`]).
+const MOVING_WEIGHT: f64 = 0.25;
 
 /// [`reach_top`], or the ankle's own height where it is beyond reach sideways.
 fn allowed_height(hip: DVec3, ankle: DVec3, limit: f64) -> f64 {
