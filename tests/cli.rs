@@ -591,6 +591,10 @@ fn options_before_the_command_reach_it_or_are_refused_by_name() {
             vec!["--fps", "10", "simulate", &config],
             "--fps before the command is the lab's option, not read by `simulate`",
         ),
+        // The default's own value, written, is written: not dropped without a word.
+        (vec!["--fps", "30", "ik", &config], "--fps before the command is the lab's option, not read by `ik`"),
+        (vec!["--marker", "braille", "compare", &config], "--marker before the command is the lab's option"),
+        (vec![&config, "tui", &config], "two configs for the lab"),
         (
             vec!["--no-mouse", "compare", &config],
             "--no-mouse before the command is the lab's option, not read by `compare`",

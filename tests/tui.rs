@@ -629,7 +629,8 @@ fn undo_says_what_is_in_force_help_keys_fit_and_paused_shows_no_fps() {
     select(&mut app, "walk.speed_mps");
     key(&mut app, KeyCode::Right);
     key(&mut app, KeyCode::Char('u'));
-    assert_eq!(app.message.as_deref(), Some("undone: back to walk.speed_mps = 1.3"));
+    // The undo is a speed edit too, walked over two steps (it replaces the ramp to 1.31).
+    assert_eq!(app.message.as_deref(), Some("undone: back to walk.speed_mps = 1.3, reached over two steps"));
     key(&mut app, KeyCode::Char('?'));
     let help = screen(&app, 160, 48);
     let row = help.lines().find(|l| l.contains("shift+right L")).expect("the coarse-step line");

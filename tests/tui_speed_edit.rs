@@ -109,3 +109,70 @@ fn a_typed_speed_is_walked_over_two_steps_without_a_jump() {
         assert!(worst[8] <= pelvis_allowed, "{part}: pelvis {:.2}x the steady walks' velocity change", worst[8]);
     }
 }
+
+/// The walk ends at the speed the panel shows, however quickly edits follow each other, and a
+/// new speed is refused while the walk starts or stops (a hostile pass of session 20: an undo
+/// before the ramp's first heel strike left the panel at 1.8 m/s and the walk at 0.8 for good).
+#[test]
+fn quick_speed_edits_end_where_the_panel_says_and_wait_out_a_stop() {
+    let walked = |app: &App| app.walker.params().walk.speed_mps;
+    let fresh = || {
+        let mut app = load_app(None, &["walk.speed_mps=1.8".to_string()]).unwrap();
+        walk(&mut app, 2.0);
+        app
+    };
+    // Typed, then undone at once.
+    let mut app = fresh();
+    type_value(&mut app, "walk.speed_mps", "0.8");
+    key(&mut app, KeyCode::Char('u'));
+    walk(&mut app, 5.0);
+    assert_eq!((app.params.walk.speed_mps, walked(&app)), (1.8, 1.8));
+    // Typed, then typed back.
+    let mut app = fresh();
+    type_value(&mut app, "walk.speed_mps", "0.8");
+    type_value(&mut app, "walk.speed_mps", "1.8");
+    walk(&mut app, 5.0);
+    assert_eq!((app.params.walk.speed_mps, walked(&app)), (1.8, 1.8));
+    // Undo and redo in a burst, ending on undo.
+    let mut app = fresh();
+    type_value(&mut app, "walk.speed_mps", "0.8");
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Char('u'));
+        gaitlab::tui::effects::step(
+            &mut app,
+            gaitlab::tui::app::Msg::Key(KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL)),
+        );
+    }
+    key(&mut app, KeyCode::Char('u'));
+    walk(&mut app, 5.0);
+    assert_eq!((app.params.walk.speed_mps, walked(&app)), (1.8, 1.8));
+    // Another key edited during a ramp leaves the ramp alone: reached when it would have been.
+    let reached = |app: &App| {
+        app.walker.pace_events().iter().rev().find_map(|e| match e.kind {
+            gaitlab::model::walk::pace::PaceEventKind::SpeedReached(_) => Some(e.time_s),
+            _ => None,
+        })
+    };
+    let mut plain = fresh();
+    type_value(&mut plain, "walk.speed_mps", "0.8");
+    walk(&mut plain, 4.0);
+    let mut edited = fresh();
+    type_value(&mut edited, "walk.speed_mps", "0.8");
+    walk(&mut edited, 0.3);
+    type_value(&mut edited, "walk.sway", "0.5");
+    assert!(!edited.message.as_deref().unwrap_or_default().contains("reached over"), "{:?}", edited.message);
+    walk(&mut edited, 3.7);
+    assert_eq!(reached(&edited), reached(&plain));
+    assert_eq!(walked(&edited), 0.8);
+    // Stopping: refused with the reason, nothing changed; once standing, taken.
+    let mut app = fresh();
+    key(&mut app, KeyCode::Char('w'));
+    walk(&mut app, 0.1);
+    type_value(&mut app, "walk.speed_mps", "0.8");
+    assert!(app.message.as_deref().unwrap_or_default().contains("stopping"), "{:?}", app.message);
+    assert_eq!((app.params.walk.speed_mps, walked(&app)), (1.8, 1.8));
+    walk(&mut app, 4.0);
+    assert_eq!(app.walker.walk_state(), gaitlab::model::walk::pace::WalkState::Standing);
+    type_value(&mut app, "walk.speed_mps", "0.8");
+    assert_eq!((app.params.walk.speed_mps, walked(&app)), (0.8, 0.8));
+}

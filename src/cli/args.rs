@@ -5,6 +5,12 @@
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 
+/// The lab's redraws per second when `--fps` is not given.
+pub(crate) const LAB_FPS: f64 = 30.0;
+
+/// The lab's marker when `--marker` is not given.
+pub(crate) const LAB_MARKER: &str = "braille";
+
 /// gaitlab — a terminal lab for procedural human walking.
 #[derive(Debug, Parser)]
 #[command(name = "gaitlab", version, about, long_about = None)]
@@ -19,15 +25,17 @@ pub struct Cli {
     pub command: Option<Command>,
 }
 
-/// Options of the terminal lab.
+/// Options of the terminal lab. The redraw rate and marker are `None` where not written (so a
+/// value written before a command is told from none, even the default's own): the lab takes
+/// [`LAB_FPS`] and [`LAB_MARKER`] then.
 #[derive(Debug, Clone, clap::Args)]
 pub struct LabArgs {
-    /// Redraws per second while walking (nothing is drawn when paused and idle)
-    #[arg(long, default_value_t = 30.0)]
-    pub fps: f64,
-    /// How curves and the figure are drawn: braille, halfblock or block (for fonts without braille)
-    #[arg(long, default_value = "braille")]
-    pub(crate) marker: String,
+    /// Redraws per second while walking (nothing is drawn when paused and idle) [default: 30]
+    #[arg(long)]
+    pub fps: Option<f64>,
+    /// How curves and the figure are drawn: braille, halfblock or block (for fonts without braille) [default: braille]
+    #[arg(long)]
+    pub(crate) marker: Option<String>,
     /// Leave the mouse to the terminal (no clicking, dragging or wheel in the lab)
     #[arg(long)]
     pub no_mouse: bool,

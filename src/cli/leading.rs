@@ -10,12 +10,6 @@
 use crate::cli::args::{Cli, Command, LabArgs};
 use crate::error::{Error, Result};
 
-/// The lab's default redraw rate (`LabArgs::fps`), to tell a leading `--fps` from none.
-const LAB_DEFAULT_FPS: f64 = 30.0;
-
-/// The lab's default marker (`LabArgs::marker`).
-const LAB_DEFAULT_MARKER: &str = "braille";
-
 /// Moves `cli`'s leading options into its command, or says why they cannot go there.
 ///
 /// # Errors
@@ -25,8 +19,16 @@ pub(crate) fn hoist(cli: &mut Cli) -> Result<()> {
     let Some(command) = cli.command.as_mut() else { return Ok(()) };
     let leading = std::mem::replace(&mut cli.lab, LabArgs::defaults());
     if let Command::Tui { config, lab } = command {
-        if config.is_none() {
-            *config = cli.config.take();
+        match (cli.config.take(), config.as_ref()) {
+            (Some(leading), Some(own)) => {
+                return Err(Error::Usage(format!(
+                    "two configs for the lab, `{}` before `tui` and `{}` after it: give one",
+                    leading.display(),
+                    own.display()
+                )));
+            }
+            (leading, None) => *config = leading,
+            (None, Some(_)) => {}
         }
         lab.merge_leading(leading);
         return Ok(());
@@ -58,14 +60,14 @@ pub(crate) fn hoist(cli: &mut Cli) -> Result<()> {
 impl LabArgs {
     /// The options as clap gives them when none is written.
     fn defaults() -> Self {
-        Self { fps: LAB_DEFAULT_FPS, marker: LAB_DEFAULT_MARKER.to_owned(), no_mouse: false, sets: Vec::new() }
+        Self { fps: None, marker: None, no_mouse: false, sets: Vec::new() }
     }
 
-    /// The first lab-only option (not `--set`) written with a value other than its default.
+    /// The first lab-only option (not `--set`) written.
     fn lab_only_option(&self) -> Option<&'static str> {
-        if self.fps != LAB_DEFAULT_FPS {
+        if self.fps.is_some() {
             Some("--fps")
-        } else if self.marker != LAB_DEFAULT_MARKER {
+        } else if self.marker.is_some() {
             Some("--marker")
         } else if self.no_mouse {
             Some("--no-mouse")
@@ -76,12 +78,8 @@ impl LabArgs {
 
     /// Takes the options written before `tui` where none is written after it.
     fn merge_leading(&mut self, leading: LabArgs) {
-        if self.fps == LAB_DEFAULT_FPS {
-            self.fps = leading.fps;
-        }
-        if self.marker == LAB_DEFAULT_MARKER {
-            self.marker = leading.marker;
-        }
+        self.fps = self.fps.or(leading.fps);
+        self.marker = self.marker.take().or(leading.marker);
         self.no_mouse |= leading.no_mouse;
         let own = std::mem::take(&mut self.sets);
         self.sets = leading.sets;
@@ -144,11 +142,15 @@ mod tests {
         let Some(Command::Tui { config, lab }) = cli.command else { panic!("not the lab") };
         assert_eq!(config.as_deref(), Some(std::path::Path::new("a.toml")));
         assert_eq!(lab.sets, ["walk.sway=0", "walk.speed_mps=1"]);
-        assert!((lab.fps - 12.0).abs() < 1e-12);
-        // Written on both sides, the command's own wins.
-        let cli = hoisted(&["gaitlab", "--fps", "12", "tui", "--fps", "20", "--marker", "block"]);
+        assert_eq!(lab.fps, Some(12.0));
+        // Written on both sides, the command's own wins, even when it is the default's value.
+        let cli =
+            hoisted(&["gaitlab", "--fps", "12", "--marker", "block", "tui", "--fps", "30", "--marker", "braille"]);
         let Some(Command::Tui { lab, .. }) = cli.command else { panic!("not the lab") };
-        assert!((lab.fps - 20.0).abs() < 1e-12);
-        assert_eq!(lab.marker, "block");
+        assert_eq!(lab.fps, Some(30.0));
+        assert_eq!(lab.marker.as_deref(), Some("braille"));
+        // Two configs: refused.
+        let mut cli = Cli::try_parse_from(["gaitlab", "a.toml", "tui", "b.toml"]).expect("parses");
+        assert!(hoist(&mut cli).is_err());
     }
 }

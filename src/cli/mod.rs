@@ -16,6 +16,7 @@ mod leading;
 mod optimise;
 mod snapshot;
 pub use args::{Cli, Command, LabArgs};
+use args::{LAB_FPS, LAB_MARKER};
 use common::{Progress, in_range};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -113,15 +114,16 @@ pub fn run(mut cli: Cli) -> u8 {
 }
 
 fn lab(config: Option<PathBuf>, args: &LabArgs) -> u8 {
-    let Some(&(_, marker)) = crate::tui::MARKERS.iter().find(|(n, _)| *n == args.marker) else {
+    let name = args.marker.as_deref().unwrap_or(LAB_MARKER);
+    let Some(&(_, marker)) = crate::tui::MARKERS.iter().find(|(n, _)| *n == name) else {
         let names: Vec<&str> = crate::tui::MARKERS.iter().map(|(n, _)| *n).collect();
-        eprintln!("gaitlab: --marker {}: unknown; valid: {}", args.marker, names.join(", "));
+        eprintln!("gaitlab: --marker {name}: unknown; valid: {}", names.join(", "));
         return 2;
     };
     let code = crate::tui::run(&crate::tui::Options {
         config,
         sets: args.sets.clone(),
-        fps: args.fps,
+        fps: args.fps.unwrap_or(LAB_FPS),
         marker,
         mouse: !args.no_mouse,
     });

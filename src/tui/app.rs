@@ -575,7 +575,9 @@ impl App {
         let name = item.split_whitespace().next().unwrap_or_default();
         match what {
             PickKind::Preset => match presets::params(name) {
-                Some(Ok(params)) => self.apply(params, format!("preset {name}"), true),
+                Some(Ok(params)) => {
+                    self.apply(params, format!("preset {name}"), true);
+                }
                 Some(Err(e)) => self.message = Some(e.to_string()),
                 None => {}
             },

@@ -121,19 +121,30 @@ impl App {
         }
     }
 
-    /// Puts `params` in force: live on the walk where the model allows, else a restart. A new
-    /// speed is walked over [`crate::model::walk::pace::RAMP_STEPS`] steps, as the pace keys and a schedule walk it: set
-    /// at once it switched cadence and forward speed within a frame (1.8 -> 0.8 m/s: the
-    /// pelvis's velocity change per frame 3.4-4.9x a steady walk's, the knee 1.5x as fast).
-    pub(super) fn apply(&mut self, params: WalkParams, mut what: String, record: bool) {
+    /// Puts `params` in force: live on the walk where the model allows, else a restart; returns
+    /// whether it did. A new speed is walked over [`crate::model::walk::pace::RAMP_STEPS`]
+    /// steps, as the pace keys and a schedule walk it: set at once it switched cadence and
+    /// forward speed within a frame (1.8 -> 0.8 m/s: the pelvis's velocity change per frame
+    /// 3.4-4.9x a steady walk's, the knee 1.5x as fast). While the walk starts or stops a new
+    /// speed is refused, as the pace keys refuse it (set at once there: 2.6x / 4.0x). Every
+    /// other live edit keeps the speed being walked, so a ramp under way goes on.
+    pub(super) fn apply(&mut self, params: WalkParams, mut what: String, record: bool) -> bool {
+        let state = self.walker.walk_state();
+        let new_speed = params.walk.speed_mps != self.params.walk.speed_mps;
+        if new_speed && let Some(why) = speed_refused(state) {
+            self.message = Some(format!("walk.speed_mps: {why}"));
+            return false;
+        }
         let before = std::mem::replace(&mut self.params, params.clone());
-        let walked_speed = self.walker.params().walk.speed_mps;
-        let mut ramp = self.walker.walk_state() == WalkState::Walking && params.walk.speed_mps != walked_speed;
-        let live = if ramp {
-            // Everything else now, at the speed being walked; the speed then over the steps.
-            // Keys that make no walk at the old speed are taken with the new one at once.
+        let mut ramp = new_speed && state == WalkState::Walking;
+        let live = if state == WalkState::Standing {
+            self.walker.set_params(&params)
+        } else {
+            // Everything but the speed now, at the speed being walked; a new speed then over
+            // the steps (asked again, it replaces a ramp under way, even back to the speed
+            // being walked). Keys that make no walk at that speed are taken with the new one.
             let mut now = params.clone();
-            now.walk.speed_mps = walked_speed;
+            now.walk.speed_mps = self.walker.params().walk.speed_mps;
             match self.walker.set_params(&now) {
                 Err(_) => {
                     ramp = false;
@@ -141,8 +152,6 @@ impl App {
                 }
                 live => live,
             }
-        } else {
-            self.walker.set_params(&params)
         };
         match live {
             Ok(true) if ramp => {
@@ -154,7 +163,7 @@ impl App {
             Err(e) => {
                 self.params = before;
                 self.message = Some(format!("refused: {e}"));
-                return;
+                return false;
             }
         }
         if record {
@@ -162,6 +171,7 @@ impl App {
             self.redo.clear();
         }
         self.message = Some(what);
+        true
     }
 
     pub(super) fn undo(&mut self) {
@@ -188,8 +198,11 @@ impl App {
                 } else {
                     format!("undone: back to {}", now.join(", "))
                 };
-                self.apply(edit.before.clone(), message, false);
-                self.redo.push(edit);
+                if self.apply(edit.before.clone(), message, false) {
+                    self.redo.push(edit);
+                } else {
+                    self.undo.push(edit);
+                }
             }
             None => self.message = Some("nothing to undo".into()),
         }
@@ -198,10 +211,23 @@ impl App {
     pub(super) fn redo(&mut self) {
         match self.redo.pop() {
             Some(edit) => {
-                self.apply(edit.after.clone(), format!("redone: {}", edit.what), false);
-                self.undo.push(edit);
+                if self.apply(edit.after.clone(), format!("redone: {}", edit.what), false) {
+                    self.undo.push(edit);
+                } else {
+                    self.redo.push(edit);
+                }
             }
             None => self.message = Some("nothing to redo".into()),
         }
+    }
+}
+
+/// Why a new speed cannot be taken in walk state `state`, if it cannot: the words the pace keys
+/// use there.
+fn speed_refused(state: WalkState) -> Option<&'static str> {
+    match state {
+        WalkState::Starting => Some("starting: the first step is under way; a new speed once walking"),
+        WalkState::Stopping => Some("stopping: the walk comes to rest; a new speed once standing"),
+        WalkState::Walking | WalkState::Standing => None,
     }
 }
