@@ -245,6 +245,10 @@ const PELVIS_OBLIQUITY_KEYS: [(f64, f64, f64); 7] = [
 /// passed its highest point at 20 % and fell through late stance, and no placement of it
 /// moved its range past 1.2 cm without flexing the knee 5-8° off the norms (knee RMS 3.5 at
 /// 1.21 cm, 6.1 at 2.08).
+/// The slow heel rise of sessions 17-19, kept for stairs with `speed_laws::STAIRS` (see there).
+const HEEL_RISE_SLOW_ON_STAIRS: [(f64, f64, f64); 5] =
+    [(0.0, 0.0, 10.0), (0.42, 7.21, 38.12), (0.68, 30.55, 112.97), (0.87, 50.8, 168.11), (1.0, 82.19, 235.78)];
+
 const PELVIS_VERTICAL_KEYS: [[(f64, f64, f64); 3]; 3] = [
     [(0.0, 0.0, 0.0), (0.5, 0.4704, 2.81), (1.0, 1.0, 0.0)],
     [(0.0, 0.0, 0.0), (0.5, 0.5, 1.5), (1.0, 1.0, 0.0)],
@@ -363,13 +367,28 @@ impl CurveName {
     /// between the designs at [`DESIGN_SPEEDS_MPS`] for the curves drawn at several speeds.
     #[must_use]
     pub fn default_curve_at(self, speed_mps: f64) -> Curve {
-        let designs: [&[(f64, f64, f64)]; 3] = match self {
+        self.default_curve_for(speed_mps, false)
+    }
+
+    /// [`CurveName::default_curve_at`] for a walk on stairs (`on_stairs`) or elsewhere: on
+    /// stairs the slow designs of the heel rise and the fall into double support are session
+    /// 19's (`HEEL_RISE_SLOW_ON_STAIRS`, the smoothstep), with `speed_laws::STAIRS`.
+    #[must_use]
+    pub fn default_curve_for(self, speed_mps: f64, on_stairs: bool) -> Curve {
+        let mut designs: [&[(f64, f64, f64)]; 3] = match self {
             CurveName::SwingForward => SWING_FORWARD_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::SwingHeelHeight => SWING_HEEL_HEIGHT_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::HeelRise => HEEL_RISE_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::PelvisVertical => PELVIS_VERTICAL_KEYS.each_ref().map(|k| k.as_slice()),
             _ => return self.default_curve(),
         };
+        if on_stairs {
+            match self {
+                CurveName::HeelRise => designs[0] = &HEEL_RISE_SLOW_ON_STAIRS,
+                CurveName::PelvisVertical => designs[0] = &PELVIS_VERTICAL_KEYS[1],
+                _ => {}
+            }
+        }
         let [slow, comfortable, fast] = DESIGN_SPEEDS_MPS;
         // NaN (never from a valid config) walks the comfortable design.
         let speed_mps = if speed_mps.is_nan() { comfortable } else { speed_mps };
@@ -398,13 +417,15 @@ pub struct CurveSet {
 }
 
 impl CurveSet {
-    /// Defaults at walking speed `speed_mps` with the given overrides (control points by
-    /// curve name); an override holds at every speed.
+    /// Defaults at walking speed `speed_mps`, on stairs or not ([`CurveName::default_curve_for`]),
+    /// with the given overrides (control points by curve name); an override holds at every
+    /// speed and on any ground.
     pub(crate) fn with_overrides<'a>(
         overrides: impl IntoIterator<Item = (&'a String, &'a Vec<(f64, f64)>)>,
         speed_mps: f64,
+        on_stairs: bool,
     ) -> Result<Self, CurveError> {
-        let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve_at(speed_mps)).collect();
+        let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve_for(speed_mps, on_stairs)).collect();
         for (name, points) in overrides {
             if let Some(c) = CurveName::from_key(name) {
                 curves[c as usize] = Curve::from_pairs(name.clone(), points)?;
@@ -512,10 +533,10 @@ mod speed_design_tests {
         let mine = vec![(0.0, 0.0), (0.3, 0.2), (0.7, 0.9), (1.0, 1.0)];
         let overrides = [("swing_forward".to_string(), mine)];
         for v in [0.8, 1.6] {
-            let set = CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), v).unwrap();
+            let set = CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), v, false).unwrap();
             assert_eq!(
                 set.get(CurveName::SwingForward).eval(0.5),
-                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3)
+                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3, false)
                     .unwrap()
                     .get(CurveName::SwingForward)
                     .eval(0.5)

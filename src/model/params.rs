@@ -522,14 +522,15 @@ impl WalkParams {
     ///   down) and 2 cm less per m/s faster: about as high as the stance leg reaches
     ///   (`speed_laws::midstance_drop_cm`);
     /// - mid-stance offset, the lowest point's share of the double support and the heel-rise
-    ///   phase: laws given at knots from 0.4 to 2.0 m/s, fitted to the speed-matched norms
+    ///   phase: laws given at knots from 0.4 to 2.0 m/s, fitted to the speed-matched norms (on
+    ///   stairs, slower than 1.3 m/s, session 19's: `speed_laws::STAIRS`)
     ///   (`speed_laws::midstance_offset_cm`, `double_support_key_share`, `heel_rise_phase`);
     /// - stance rise all the way to the standing stance leg up to 0.8 m/s, none from 1.3 m/s
     ///   (`speed_laws::stance_rise`);
     /// - arm swing: shoulder range 25° and elbow range 15° at 1.3 m/s, +30°/+20° per m/s.
     #[must_use]
     pub fn resolve(&self) -> Resolved {
-        let v = self.walk.speed_mps;
+        let (v, stairs) = (self.walk.speed_mps, self.terrain.kind == TerrainChoice::Stairs);
         let b = &self.body;
         let mut dims = BodyDims::from_height(b.height_m, b.sex);
         let set = |slot: &mut f64, value: Option<f64>| {
@@ -569,17 +570,17 @@ impl WalkParams {
             stride_m,
             step_width_m: self.walk.step_width_m.unwrap_or((0.10 - 0.02 * fast).max(0.05)),
             foot_flat: self.legs.foot_flat,
-            heel_rise: self.legs.heel_rise.unwrap_or(heel_rise_phase(v)),
+            heel_rise: self.legs.heel_rise.unwrap_or(heel_rise_phase(v, stairs)),
             toe_off: self.legs.toe_off.unwrap_or((0.62 - 0.04 * fast).clamp(0.55, 0.70)),
             double_support_key: double_support_key_share(v),
             swing_lead: swing_lead(v),
             rotation_range: deg(p.rotation_range_deg.unwrap_or(6.0 + 3.3 * above_slow)),
             obliquity_range: deg(p.obliquity_range_deg.unwrap_or(obliquity_range_deg(v)) * sway),
             tilt_range: deg(p.tilt_range_deg),
-            vertical_range: p.vertical_range_cm.unwrap_or(vertical_range_cm(v)).max(0.0) / 100.0,
+            vertical_range: p.vertical_range_cm.unwrap_or(vertical_range_cm(v, stairs)).max(0.0) / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
-            midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v)) / 100.0,
+            midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v, stairs)) / 100.0,
             stance_rise: p.stance_rise.unwrap_or(stance_rise(v)),
             trunk_lean: deg(p.trunk_lean_deg),
             rest_tilt: deg(p.rest_tilt_deg),

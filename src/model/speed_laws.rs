@@ -56,8 +56,9 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// knee further from the norms (session 18), and free, the 1.0 m/s heel rise went to 0.34 and
 /// the loading knee peaked at 4 % of the cycle (the norms' at 12 %). The 0.4 m/s knot is the
 /// earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at brisk's speed.
-pub(crate) fn midstance_offset_cm(speed_mps: f64) -> f64 {
-    through_knots(&MIDSTANCE_OFFSET_CM_KNOTS, speed_mps)
+/// On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
+pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
+    through_knots(if on_stairs { &STAIRS.midstance_offset_cm } else { &MIDSTANCE_OFFSET_CM_KNOTS }, speed_mps)
 }
 
 /// Where the pelvis passes its lowest point, as a share of the double support after heel
@@ -92,9 +93,48 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// session 20 with the slow designs (`gait_curves`), whose pelvis holds its height through
 /// late stance and falls late into double support, as people's does; the walked range at 0.8
 /// m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50).
-pub(crate) fn vertical_range_cm(speed_mps: f64) -> f64 {
-    through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps)
+/// On stairs (`on_stairs`) none at any speed ([`STAIRS`]).
+pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
+    if on_stairs { 0.0 } else { through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps) }
 }
+
+/// The laws a walk on stairs keeps from session 19, before the level slow walk's late fall into
+/// double support (session 20: [`vertical_range_cm`], `gait_curves::PELVIS_VERTICAL_KEYS` and
+/// the slow heel rise). That calibration is fitted to adults walking on level ground, the only
+/// norms here; taken on the 0.5 m/s stairs it left the climb with no push-off at all
+/// (`stairs_up`'s largest plantarflexion 7.8 -> 0.9°, people's 15-20°). With these laws and the
+/// session-19 slow designs (`gait_curves::CurveName::default_curve_for`) the stairs walk as
+/// they did: 7.8°. Neither calibration is fitted to stair data (none in the repository).
+pub(crate) struct StairsLaws {
+    /// Knots of [`midstance_offset_cm`] on stairs.
+    pub(crate) midstance_offset_cm: [(f64, f64); 8],
+    /// Knots of [`heel_rise_phase`] on stairs.
+    pub(crate) heel_rise_phase: [(f64, f64); 8],
+}
+
+/// Session 19's knots, kept for stairs ([`StairsLaws`]); from 1.3 m/s they are the level walk's.
+pub(crate) const STAIRS: StairsLaws = StairsLaws {
+    midstance_offset_cm: [
+        (0.4, 12.0),
+        (0.8, 16.2),
+        (1.0, 12.67),
+        (1.15, 12.12),
+        (1.3, 12.36),
+        (1.6, 14.3),
+        (1.75, 14.29),
+        (2.0, 14.29),
+    ],
+    heel_rise_phase: [
+        (0.4, 0.31),
+        (0.8, 0.31),
+        (1.0, 0.312),
+        (1.15, 0.305),
+        (1.3, 0.30),
+        (1.6, 0.28),
+        (1.75, 0.293),
+        (2.0, 0.293),
+    ],
+};
 
 /// The cycle phase at which the stance heel rises at `speed_mps`: linear between
 /// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.329.
@@ -105,8 +145,9 @@ pub(crate) fn vertical_range_cm(speed_mps: f64) -> f64 {
 /// 1.25x the steady walks' joint jerk (`tests/gait_normal.rs` allows 1.2x); at 1.6 m/s it is
 /// held at 0.28 so a slowdown from 1.6 m/s (`tests/pace.rs`, 0.8 -> 1.6 -> 1.0 m/s) swings the
 /// trailing hip no faster per frame than 1.2x a steady walk.
-pub(crate) fn heel_rise_phase(speed_mps: f64) -> f64 {
-    through_knots(&HEEL_RISE_PHASE_KNOTS, speed_mps)
+/// On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
+pub(crate) fn heel_rise_phase(speed_mps: f64, on_stairs: bool) -> f64 {
+    through_knots(if on_stairs { &STAIRS.heel_rise_phase } else { &HEEL_RISE_PHASE_KNOTS }, speed_mps)
 }
 
 /// How far ahead of the swing-forward design curve the swing heel moves at `speed_mps`
@@ -196,7 +237,7 @@ mod tests {
             assert!(close(double_support_key_share(v), share), "{v}: {}", double_support_key_share(v));
         }
         for (v, phase) in [(0.6, 0.316), (0.8, 0.322), (1.0, 0.329), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293)] {
-            assert!(close(heel_rise_phase(v), phase), "{v}: {}", heel_rise_phase(v));
+            assert!(close(heel_rise_phase(v, false), phase), "{v}: {}", heel_rise_phase(v, false));
         }
         for (v, cm) in [
             (0.3, 12.0),
@@ -208,10 +249,19 @@ mod tests {
             (1.6, 14.3),
             (2.0, 14.29),
         ] {
-            assert!(close(midstance_offset_cm(v), cm), "{v}: {}", midstance_offset_cm(v));
+            assert!(close(midstance_offset_cm(v, false), cm), "{v}: {}", midstance_offset_cm(v, false));
         }
         for (v, cm) in [(0.5, 1.05), (0.8, 1.05), (0.9, 1.175), (1.0, 1.3), (1.15, 0.65), (1.3, 0.0), (1.6, 0.0)] {
-            assert!(close(vertical_range_cm(v), cm), "{v}: {}", vertical_range_cm(v));
+            assert!(close(vertical_range_cm(v, false), cm), "{v}: {}", vertical_range_cm(v, false));
+            assert_eq!(vertical_range_cm(v, true), 0.0);
+        }
+        // Stairs keep session 19's slow walk; from 1.3 m/s the laws are one.
+        for (v, cm, phase) in [(0.5, 13.05, 0.31), (0.8, 16.2, 0.31), (1.0, 12.67, 0.312)] {
+            assert!(close(midstance_offset_cm(v, true), cm) && close(heel_rise_phase(v, true), phase), "{v}");
+        }
+        for v in [1.3, 1.45, 1.6, 1.75, 2.0] {
+            assert!(close(midstance_offset_cm(v, true), midstance_offset_cm(v, false)), "{v}");
+            assert!(close(heel_rise_phase(v, true), heel_rise_phase(v, false)), "{v}");
         }
         for (v, drop) in [(0.9, 0.0), (1.3, 0.8), (1.6, 0.2), (1.75, 0.0)] {
             assert!(close(midstance_drop_cm(v), drop), "{v}: {}", midstance_drop_cm(v));

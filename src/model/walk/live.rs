@@ -5,7 +5,7 @@
 
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::params::WalkParams;
+use crate::model::params::{TerrainChoice, WalkParams};
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
 use crate::model::walk::leg::{LegPhase, PhaseBounds};
 use crate::model::walk::upper::ArmHang;
@@ -57,8 +57,12 @@ impl Walker {
             return Ok(false);
         }
         let r = params.resolve();
-        let design =
-            CurveSet::with_overrides(&params.curves, params.walk.speed_mps).map_err(|e| ModelError(e.to_string()))?;
+        let design = CurveSet::with_overrides(
+            &params.curves,
+            params.walk.speed_mps,
+            params.terrain.kind == TerrainChoice::Stairs,
+        )
+        .map_err(|e| ModelError(e.to_string()))?;
         let p_right = phase.rem_euclid(1.0);
         let p_left = (phase - 0.5).rem_euclid(1.0);
         self.gait.live.change_to(cycle_targets(&design, &r), p_right, p_left);

@@ -41,7 +41,7 @@ use crate::model::body::{Pose, Side};
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveSet;
 use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
-use crate::model::params::{Resolved, WalkParams};
+use crate::model::params::{Resolved, TerrainChoice, WalkParams};
 use crate::model::schedule::PaceAction;
 use crate::model::terrain::Terrain;
 use gait::{LiveCurves, cycle_targets, trajectory_curves};
@@ -142,7 +142,8 @@ pub struct Walker {
 pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
     let r = params.resolve();
     let design =
-        CurveSet::with_overrides(&params.curves, params.walk.speed_mps).map_err(|e| ModelError(e.to_string()))?;
+        CurveSet::with_overrides(&params.curves, params.walk.speed_mps, params.terrain.kind == TerrainChoice::Stairs)
+            .map_err(|e| ModelError(e.to_string()))?;
     if r.toe_off.is_nan() || r.toe_off <= 0.5 {
         return Err(ModelError(format!(
             "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",
