@@ -354,12 +354,12 @@ const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
     [(0.0, 0.0, 0.5), (0.316, 0.2641, 0.98), (0.632, 0.6217, 1.909), (0.842, 0.9331, 0.9431), (1.0, 1.0, 0.304)],
 ];
 
-/// The walking speeds (m/s) of the three designs of the swing's forward and heel-height
-/// curves, the heel rise and the pelvis's fall into double support: slow, comfortable and fast. Between two the keys are blended linearly by speed (a Hermite curve is linear in
-/// its keys' values and slopes, so the curve is the same blend of the two); outside, the end
-/// design. Why three: each was fitted to the speed-matched norms at its speed
-/// (docs/gait-model.md §12, session 15), and the slow walk's and the fast walk's differ in
-/// opposite directions from the comfortable one's.
+/// The walking speeds (m/s) of the three designs of the swing's forward and heel-height curves, the
+/// heel rise and the pelvis's fall into double support: slow, comfortable and fast. Between two the
+/// keys are blended linearly by speed (a Hermite curve is linear in its keys' values and slopes, so
+/// the curve is the same blend of the two); outside, the end design. Why three: each was fitted to
+/// the speed-matched norms at its speed (docs/gait-model.md §12, session 15), and the slow walk's
+/// and the fast walk's differ in opposite directions from the comfortable one's.
 pub const DESIGN_SPEEDS_MPS: [f64; 3] = [0.8, 1.3, 1.6];
 
 impl CurveName {

@@ -33,30 +33,30 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
     drop.max(0.0)
 }
 
-/// How far ahead of the stance heel the pelvis passes at mid-stance (cm) at `speed_mps`, when
-/// the config does not say: linear between [`MIDSTANCE_OFFSET_CM_KNOTS`]. Three laws are
-/// fitted together at their knots, this one, [`double_support_key_share`] and
-/// [`heel_rise_phase`] (with, at 0.8, 1.3 and 1.6 m/s, the swing and heel-rise designs of
-/// `gait_curves`): Nelder–Mead on `gaitlab compare`'s knee RMS plus half the hip's and the
-/// ankle's against the speed-matched norms, with the walk's pelvis vertical range held toward
-/// people's (`data/normative/pelvis_vertical_by_speed.csv`, less about half an SD), the
-/// loading knee's peak near the norms' in size and timing, and the pelvis's and the knee's
-/// largest frame-to-frame change of rate bounded. Session 18 fitted them under the thesis's
-/// pelvic obliquity (a fixed 7°, the landing hip dropped at heel strike); session 19 fitted them
-/// again under the norms' own obliquity ([`obliquity_range_deg`]), whose landing hip is up at
-/// heel strike, so that the double support sits lower and the mid-stance further ahead
-/// (12.4 cm at 1.3 m/s, 16.2 at 0.8). Session 20 fitted the 0.8 and 1.0 m/s knots again with
-/// the slow walk's late fall into double support (`gait_curves::PELVIS_VERTICAL_KEYS`,
-/// [`vertical_range_cm`]): 12.23 and 11.43 cm, the heel rise 0.322 and 0.329, the walked range
-/// 0.81 -> 1.99 cm at 0.8 m/s (docs/gait-model.md §12). Fitted on the joint curves alone the pelvis had stood
-/// 15 cm ahead of the heel at 1.3 m/s with a walked range of 1.9 cm against people's 3.6 ±
-/// 1.6. The knots at 1.0 and 1.15 m/s are fitted over 9 speeds from 0.85 to 1.25 m/s
-/// together, the heel rise at most 0.312 there: fitted at one speed alone, the walks either
-/// side had the pelvis optimiser take a second feasible double support whose walk flexes the
-/// knee further from the norms (session 18), and free, the 1.0 m/s heel rise went to 0.34 and
-/// the loading knee peaked at 4 % of the cycle (the norms' at 12 %). The 0.4 m/s knot is the
-/// earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at brisk's speed.
-/// On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
+/// How far ahead of the stance heel the pelvis passes at mid-stance (cm) at `speed_mps`, when the
+/// config does not say: linear between [`MIDSTANCE_OFFSET_CM_KNOTS`]. Three laws are fitted
+/// together at their knots, this one, [`double_support_key_share`] and [`heel_rise_phase`] (with,
+/// at 0.8, 1.3 and 1.6 m/s, the swing and heel-rise designs of `gait_curves`): Nelder–Mead on
+/// `gaitlab compare`'s knee RMS plus half the hip's and the ankle's against the speed-matched
+/// norms, with the walk's pelvis vertical range held toward people's
+/// (`data/normative/pelvis_vertical_by_speed.csv`, less about half an SD), the loading knee's peak
+/// near the norms' in size and timing, and the pelvis's and the knee's largest frame-to-frame
+/// change of rate bounded. Session 18 fitted them under the thesis's pelvic obliquity (a fixed 7°,
+/// the landing hip dropped at heel strike); session 19 fitted them again under the norms' own
+/// obliquity ([`obliquity_range_deg`]), whose landing hip is up at heel strike, so that the double
+/// support sits lower and the mid-stance further ahead (12.4 cm at 1.3 m/s, 16.2 at 0.8). Session
+/// 20 fitted the 0.8 and 1.0 m/s knots again with the slow walk's late fall into double support
+/// (`gait_curves::PELVIS_VERTICAL_KEYS`, [`vertical_range_cm`]): 12.23 and 11.43 cm, the heel rise
+/// 0.322 and 0.329, the walked range 0.81 -> 1.99 cm at 0.8 m/s (docs/gait-model.md §12). Fitted on
+/// the joint curves alone the pelvis had stood 15 cm ahead of the heel at 1.3 m/s with a walked
+/// range of 1.9 cm against people's 3.6 ± 1.6. Session 18 fitted the knots at 1.0 and 1.15 m/s over 9
+/// speeds from 0.85 to 1.25 m/s together, the heel rise at most 0.312 there: fitted at one speed
+/// alone, the walks either side had the pelvis optimiser take a second feasible double support
+/// whose walk flexes the knee further from the norms (session 18), and free, the 1.0 m/s heel rise
+/// went to 0.34 and the loading knee peaked at 4 % of the cycle (the norms' at 12 %). The 0.4 m/s
+/// knot is the earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at brisk's
+/// speed. Session 20's 1.0 m/s knot is fitted at that speed alone, the loading knee's peak held
+/// at 8 % of the cycle or later (0.28 free, at 4 %). On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
 pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     through_knots(if on_stairs { &STAIRS.midstance_offset_cm } else { &MIDSTANCE_OFFSET_CM_KNOTS }, speed_mps)
 }
@@ -73,27 +73,26 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
     through_knots(&DOUBLE_SUPPORT_KEY_SHARE_KNOTS, speed_mps)
 }
 
-/// The vertical range a config that leaves `pelvis.vertical_range_cm` out asks for at
-/// `speed_mps`: from 1.0 m/s none, so the double support is asked at the mid-stance height and the reach guard lowers it until
-/// both legs reach; the walked range is then what the legs' reach gives. The thesis's law
-/// (1.9 + 1.5 (v − 0.7) cm, 2.8 at 1.3 m/s) asked the pelvis below where the legs reach at
-/// every speed up to 1.3 m/s, and each centimetre it sat lower bent both knees at heel
+/// The vertical range a config that leaves `pelvis.vertical_range_cm` out asks for at `speed_mps`:
+/// from 1.3 m/s none, so the double support is asked at the mid-stance height and the reach guard
+/// lowers it until both legs reach; the walked range is then what the legs' reach gives. The
+/// thesis's law (1.9 + 1.5 (v − 0.7) cm, 2.8 at 1.3 m/s) asked the pelvis below where the legs
+/// reach at every speed up to 1.3 m/s, and each centimetre it sat lower bent both knees at heel
 /// strike: knee RMS against the speed-matched norms 8.33 -> 7.72 deg at 0.8 m/s and, with
-/// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is
-/// the walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.66 cm at 0.8 m/s, 2.52 ->
-/// 2.07 at 1.3 with the heel rising sooner, 3.32 -> 3.17 at 1.6), below Orendurff et al.
-/// 2004's 2.7-4.8 cm; the norms' own stance hip, put through this leg chain, rises 2.5 / 2.9
-/// / 3.5 / 4.1 cm at 0.8 / 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under
-/// theirs (docs/gait-model.md §12). Session 18's placement of the pelvis over the foot
-/// ([`midstance_offset_cm`]) took the walked range to 3.0 / 3.6 cm at 1.3 / 1.6 m/s with the
-/// double support still as high as the legs reach; session 19's, under the norms' obliquity,
-/// to 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8). Slower, the walk asks the double support
-/// 1.05 cm (0.8 m/s and slower) to 1.3 cm (1.0 m/s) under its mid-stance, none again from 1.3
-/// m/s (linear between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in
-/// session 20 with the slow designs (`gait_curves`), whose pelvis holds its height through
-/// late stance and falls late into double support, as people's does; the walked range at 0.8
-/// m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50).
-/// On stairs (`on_stairs`) none at any speed ([`STAIRS`]).
+/// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is the
+/// walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.66 cm at 0.8 m/s, 2.52 -> 2.07 at
+/// 1.3 with the heel rising sooner, 3.32 -> 3.17 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm;
+/// the norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 /
+/// 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs (docs/gait-model.md
+/// §12). Session 18's placement of the pelvis over the foot ([`midstance_offset_cm`]) took the
+/// walked range to 3.0 / 3.6 cm at 1.3 / 1.6 m/s with the double support still as high as the legs
+/// reach; session 19's, under the norms' obliquity, to 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8).
+/// Slower, the walk asks the double support 1.05 cm (0.8 m/s and slower) to 1.3 cm (1.0 m/s) under
+/// its mid-stance, none again from 1.3 m/s (linear between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in
+/// session 20 with the slow designs (`gait_curves`), whose pelvis holds its height through late
+/// stance and falls late into double support, as people's does; the walked range at 0.8 m/s 0.81 ->
+/// 1.99 cm (people's 2.54 ± 0.31), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50). On stairs (`on_stairs`)
+/// none at any speed ([`STAIRS`]).
 pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     if on_stairs { 0.0 } else { through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps) }
 }
