@@ -104,7 +104,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("terrain_penetration_mm", "mm", "terrain penetration (deepest)"),
     ("reach_failures", "", "IK reach failures"),
     ("non_finite_values", "", "non-finite values"),
-    ("optimiser_steps", "", "optimiser steps"),
+    ("optimiser_steps", "", "optimiser steps (planned in the measured cycles; optimisation.csv has every step)"),
     ("optimiser_mean_cost", "", "optimiser mean cost (chosen)"),
     ("optimiser_infeasible_steps", "", "steps without a feasible candidate"),
     ("optimiser_fixed_rule_mean_cost", "", "fixed rule's mean cost, same steps"),
