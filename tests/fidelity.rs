@@ -37,7 +37,11 @@ type Bounds = [(f64, f64, f64); 3];
 
 #[test]
 fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
-    // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle.
+    // Measured (RMS deg / r / % outside +-2 SD) for hip; knee; ankle. Session 20's pelvic tilt
+    // after the norms (its shape's r 0.85-0.96, the range 3 -> 1.8 deg) moved the hip alone
+    // (measured against the pelvis): default 1.88 -> 1.64, stroll 2.54 -> 2.16, brisk 2.89 ->
+    // 2.84, 0.8 m/s 2.50 -> 2.25, 1.0 2.68 -> 2.19, 1.6 2.30 -> 2.24 deg, r up 0.001-0.004; the
+    // hip bounds below are tightened to it, the figures in the comments are from before it.
     let cases: [(&str, &[&str], Bounds); 7] = [
         // 1.88 / 0.996 / 0; 3.94 / 0.987 / 10; 2.08 / 0.977 / 0 (session 19, the norms' pelvic
         // obliquity, its RMS 2.25 -> 0.35 deg, the designs refitted to it, and the norms' rotation
@@ -46,7 +50,7 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 0.988 / 10, 1.73 / 0.975 / 0; session 17: 2.05 / 0.994 / 0, 3.21 /
         // 0.991 / 8, 2.03 / 0.962 / 0; session 14: 2.08 / 0.994 / 0; 4.91 / 0.986 / 14; 2.13 /
         // 0.967 / 0; session 13: 3.28 / 0.994 / 0; 7.25 / 0.983 / 27; 2.69 / 0.991 / 0).
-        ("configs/default.toml", &[], [(2.0, 0.99, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        ("configs/default.toml", &[], [(1.8, 0.995, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
         // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.54 / 0.992 / 0; 3.44 / 0.987 / 2;
         // 1.79 / 0.972 / 0 (session 20, the slow walk's pelvis falling late into double support
         // for people's vertical range, 1.36 -> 2.14 cm; session 19: 2.28 / 0.990 / 0, 3.07 /
@@ -56,13 +60,13 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // the slow designs' refit and the mid-stance knee of 7 -> 4 deg: 2.79 / 0.986 / 0, 3.18 / 0.992 / 2, 1.42 / 0.976 / 0; session 16:
         // 2.83 / 0.991 / 0, 4.34 / 0.991 / 2, 2.04 / 0.965 / 0; session 14: 3.73 / 0.991, 6.65 /
         // 0.989 / 14, 2.14 / 0.965).
-        ("configs/stroll.toml", &[], [(2.7, 0.985, 0.0), (3.6, 0.985, 4.0), (1.9, 0.965, 4.0)]),
+        ("configs/stroll.toml", &[], [(2.3, 0.99, 0.0), (3.6, 0.985, 4.0), (1.9, 0.965, 4.0)]),
         // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.89 / 0.992 / 0; 4.28 / 0.980 / 10;
         // 2.73 / 0.975 / 0 (session 19; session 18: 2.08 / 0.994 / 0, 4.41 / 0.981 / 10, 2.30 /
         // 0.971 / 0; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
         // 0.972 / 0; session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
         // its push-off at -25.6 deg; session 14: 2.68 / 0.992, 5.91 / 0.974 / 12, 3.60).
-        ("configs/brisk.toml", &[], [(3.1, 0.99, 0.0), (4.5, 0.975, 14.0), (3.0, 0.965, 4.0)]),
+        ("configs/brisk.toml", &[], [(3.0, 0.99, 0.0), (4.5, 0.975, 14.0), (3.0, 0.965, 4.0)]),
         // 2.50 / 0.991 / 0; 3.51 / 0.987 / 0; 1.86 / 0.969 / 0 (session 20: the pelvis falls late
         // into double support and its walked range is 1.99 cm, 0.81 before, people's 2.54 ±
         // 0.31; session 19: 2.88 / 0.982 / 0, 2.70 / 0.994 / 2, 1.99 / 0.955 / 0; session 18: 3.06 /
@@ -70,7 +74,7 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 3.19 / 0.975 / 0, 3.38 / 0.987 / 2, 1.63 / 0.962 / 0; session 16: 3.01 / 0.985 / 0,
         // 4.30 / 0.990 / 2, 2.02 / 0.957 / 0: the rise over the stance leg costs the hip 0.01 of
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.7, 0.985, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.4, 0.99, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
         // 2.68 / 0.990 / 0; 3.75 / 0.983 / 6; 1.51 / 0.980 / 0 (session 20, the walked range
         // 1.85 -> 2.20 cm; session 19: 2.48 / 0.991 / 0, 3.39 / 0.991 / 4, 1.28 / 0.985 / 0;
         // session 18: 2.40 /
@@ -79,15 +83,15 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 2.54 / 0.991 / 0, 3.22 / 0.995 / 0, 1.62 / 0.976 / 0; session 16: 2.64 / 0.994 / 0,
         // 4.30 / 0.992 / 0, 2.20 / 0.964 / 0; session 14: 3.44 / 0.994, 6.40 / 0.989 / 16, 2.33
         // / 0.966).
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.8, 0.985, 0.0), (3.9, 0.98, 8.0), (1.7, 0.975, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.35, 0.99, 0.0), (3.9, 0.98, 8.0), (1.7, 0.975, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(2.0, 0.99, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(1.8, 0.995, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
         // 2.30 / 0.994 / 0; 3.99 / 0.984 / 10; 2.32 / 0.974 / 0 (session 19; session 18: 1.91 /
         // 0.995 / 0, 3.92 / 0.986 / 8, 1.67 / 0.979 / 0; session 17: 3.08 /
         // 0.990 / 0, 4.29 / 0.980 / 8, 1.74 / 0.976 / 0; session 15: 2.48 / 0.993 / 0,
         // 3.44 / 0.988 / 6, 2.75 / 0.974 / 0, its push-off at -23.6 deg; session 14: 2.21 /
         // 0.993, 5.70 / 0.979 / 18, 2.80 / 0.981 / 2).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.5, 0.99, 0.0), (4.2, 0.98, 12.0), (2.6, 0.97, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.4, 0.99, 0.0), (4.2, 0.98, 12.0), (2.6, 0.97, 4.0)]),
     ];
 
     for (config, sets, bounds) in cases {

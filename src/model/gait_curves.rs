@@ -117,16 +117,22 @@ impl CurveName {
         let keys: &[(f64, f64, f64)] = match self {
             CurveName::PelvisObliquity => &PELVIS_OBLIQUITY_KEYS,
             CurveName::PelvisRotation => &PELVIS_ROTATION_KEYS,
-            // Whittle's gait notes [1]: two small waves a cycle; most posterior in loading
-            // response (0.12 / 0.62), most anterior in terminal stance (0.40 / 0.90).
+            // Two small waves a cycle, placed after the speed-matched norms
+            // (data/normative/joint_angles_by_speed.csv): most posterior in mid-stance (0.24 /
+            // 0.72), most anterior around the other leg's heel strike (0.47 / 0.97). Whittle's
+            // notes [1], the thesis's, put them at 0.12 / 0.62 and 0.40 / 0.90: against the norms
+            // the shape's r was 0.06 / 0.33 / 0.63 / 0.86 / 0.90 at 0.8 / 1.0 / 1.3 / 1.6 / 1.75
+            // m/s, now 0.85 / 0.95 / 0.96 / 0.87 / 0.83 (people's troughs move from 28 % at 0.8
+            // m/s to 18 % at 1.3: one shape between them). The hip, measured against the pelvis
+            // as gait labs measure it, follows: RMS 2.50 / 2.68 / 1.88 / 2.30 / 2.89 -> 2.25 /
+            // 2.19 / 1.64 / 2.24 / 2.84 deg, with `pelvis.tilt_range_deg` 3 -> 1.8 (session 20).
             CurveName::PelvisTilt => &[
-                (0.0, 0.5, -8.0),
-                (0.12, -1.0, 0.0),
-                (0.40, 1.0, 0.0),
-                (0.5, 0.5, -8.0),
-                (0.62, -1.0, 0.0),
-                (0.90, 1.0, 0.0),
-                (1.0, 0.5, -8.0),
+                (0.0, 0.9397, -3.9796),
+                (0.24, -1.0, 0.0),
+                (0.47, 1.0, 0.0),
+                (0.72, -1.0, 0.0),
+                (0.97, 1.0, 0.0),
+                (1.0, 0.9397, -3.9796),
             ],
             // Saunders, Inman & Eberhart 1953: a smooth sinusoid-like fall from the mid-stance
             // maximum to the double-support minimum, level at both ends; drawn at three speeds

@@ -356,7 +356,7 @@ impl Default for WalkParams {
             pelvis: PelvisParams {
                 rotation_range_deg: None,
                 obliquity_range_deg: None,
-                tilt_range_deg: 3.0,
+                tilt_range_deg: 1.8,
                 vertical_range_cm: None,
                 lateral_range_cm: None,
                 midstance_drop_cm: None,
