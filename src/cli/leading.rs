@@ -14,20 +14,21 @@ use crate::error::{Error, Result};
 ///
 /// # Errors
 /// [`Error::Usage`] for a leading config or lab-only option before a command other than `tui`,
-/// or a leading `--set` before one that takes no keys (`presets`, `init`).
+/// a config both before and after `tui`, or a leading `--set` before a command that takes no
+/// keys (`presets`, `init`).
 pub(crate) fn hoist(cli: &mut Cli) -> Result<()> {
     let Some(command) = cli.command.as_mut() else { return Ok(()) };
     let leading = std::mem::replace(&mut cli.lab, LabArgs::defaults());
     if let Command::Tui { config, lab } = command {
         match (cli.config.take(), config.as_ref()) {
-            (Some(leading), Some(own)) => {
+            (Some(before), Some(own)) => {
                 return Err(Error::Usage(format!(
                     "two configs for the lab, `{}` before `tui` and `{}` after it: give one",
-                    leading.display(),
+                    before.display(),
                     own.display()
                 )));
             }
-            (leading, None) => *config = leading,
+            (before, None) => *config = before,
             (None, Some(_)) => {}
         }
         lab.merge_leading(leading);
