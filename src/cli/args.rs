@@ -28,7 +28,7 @@ pub struct Cli {
 /// Options of the terminal lab. The redraw rate and marker are `None` where not written (so a
 /// value written before a command is told from none, even the default's own): the lab takes
 /// 30 redraws a second and braille then.
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone, Default, clap::Args)]
 pub struct LabArgs {
     /// Redraws per second while walking (nothing is drawn when paused and idle) [default: 30]
     #[arg(long)]

@@ -18,7 +18,7 @@ use crate::error::{Error, Result};
 /// keys (`presets`, `init`).
 pub(crate) fn hoist(cli: &mut Cli) -> Result<()> {
     let Some(command) = cli.command.as_mut() else { return Ok(()) };
-    let leading = std::mem::replace(&mut cli.lab, LabArgs::defaults());
+    let leading = std::mem::take(&mut cli.lab);
     if let Command::Tui { config, lab } = command {
         match (cli.config.take(), config.as_ref()) {
             (Some(before), Some(own)) => {
@@ -59,11 +59,6 @@ pub(crate) fn hoist(cli: &mut Cli) -> Result<()> {
 }
 
 impl LabArgs {
-    /// The options as clap gives them when none is written.
-    fn defaults() -> Self {
-        Self { fps: None, marker: None, no_mouse: false, sets: Vec::new() }
-    }
-
     /// The first lab-only option (not `--set`) written.
     fn lab_only_option(&self) -> Option<&'static str> {
         if self.fps.is_some() {

@@ -47,18 +47,19 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// support sits lower and the mid-stance further ahead (12.4 cm at 1.3 m/s, 16.2 at 0.8). Session
 /// 20 fitted the 0.8 and 1.0 m/s knots again with the slow walk's late fall into double support
 /// (`gait_curves::PELVIS_VERTICAL_KEYS`, [`vertical_range_cm`]): 12.23 and 11.43 cm, the heel rise
-/// 0.322 and 0.329, the walked range 0.81 -> 1.99 cm at 0.8 m/s (docs/gait-model.md §12). Fitted on
-/// the joint curves alone the pelvis had stood 15 cm ahead of the heel at 1.3 m/s with a walked
-/// range of 1.9 cm against people's 3.6 ± 1.6. Session 18 fitted the knots at 1.0 and 1.15 m/s over 9
-/// speeds from 0.85 to 1.25 m/s together, the heel rise at most 0.312 there: fitted at one speed
-/// alone, the walks either side had the pelvis optimiser take a second feasible double support
-/// whose walk flexes the knee further from the norms (session 18), and free, the 1.0 m/s heel rise
-/// went to 0.34 and the loading knee peaked at 4 % of the cycle (the norms' at 12 %). The 0.4 m/s
-/// knot is the earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at brisk's
-/// speed. Session 20's 1.0 m/s knot is fitted at that speed alone, the loading knee's peak held
-/// at 8 % of the cycle or later (0.28 free, at 4 %). On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
+/// 0.322 and 0.329, the walked range 0.81 -> 1.99 cm at 0.8 m/s (docs/gait-model.md §12). Fitted
+/// on the joint curves alone the pelvis had stood 15 cm ahead of the heel at 1.3 m/s with a walked
+/// range of 1.9 cm against people's 3.6 ± 1.6. Session 18 fitted the knots at 1.0 and 1.15 m/s
+/// over 9 speeds from 0.85 to 1.25 m/s together, the heel rise at most 0.312 there: fitted at one
+/// speed alone, the walks either side had the pelvis optimiser take a second feasible double
+/// support whose walk flexes the knee further from the norms (session 18), and free, the 1.0 m/s
+/// heel rise went to 0.34 and the loading knee peaked at 4 % of the cycle (the norms' at 12 %).
+/// The 0.4 m/s knot is the earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at
+/// brisk's speed. Session 20's 1.0 m/s knot is fitted at that speed alone, the loading knee's peak
+/// held at 8 % of the cycle or later (0.28 free, at 4 %). On stairs (`on_stairs`) the 0.8 and 1.0
+/// m/s knots of session 19 ([`STAIRS`]).
 pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
-    through_knots(if on_stairs { &STAIRS.midstance_offset_cm } else { &MIDSTANCE_OFFSET_CM_KNOTS }, speed_mps)
+    through_knots(&knots_on(&MIDSTANCE_OFFSET_CM_KNOTS, STAIRS.midstance_offset_cm, on_stairs), speed_mps)
 }
 
 /// Where the pelvis passes its lowest point, as a share of the double support after heel
@@ -81,18 +82,18 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// strike: knee RMS against the speed-matched norms 8.33 -> 7.72 deg at 0.8 m/s and, with
 /// [`double_support_key_share`]'s sooner lowest point, 7.25 -> 4.96 at 1.3 m/s. The price is the
 /// walked range (summary's pelvis_vertical_range_cm: 0.83 -> 0.66 cm at 0.8 m/s, 2.52 -> 2.07 at
-/// 1.3 with the heel rising sooner, 3.32 -> 3.17 at 1.6), below Orendurff et al. 2004's 2.7-4.8 cm;
-/// the norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at 0.8 /
-/// 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs (docs/gait-model.md
-/// §12). Session 18's placement of the pelvis over the foot ([`midstance_offset_cm`]) took the
-/// walked range to 3.0 / 3.6 cm at 1.3 / 1.6 m/s with the double support still as high as the legs
-/// reach; session 19's, under the norms' obliquity, to 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8).
-/// Slower, the walk asks the double support 1.05 cm (0.8 m/s and slower) to 1.3 cm (1.0 m/s) under
-/// its mid-stance, none again from 1.3 m/s (linear between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in
-/// session 20 with the slow designs (`gait_curves`), whose pelvis holds its height through late
-/// stance and falls late into double support, as people's does; the walked range at 0.8 m/s 0.81 ->
-/// 1.99 cm (people's 2.54 ± 0.31), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50). On stairs (`on_stairs`)
-/// none at any speed ([`STAIRS`]).
+/// 1.3 with the heel rising sooner, 3.32 -> 3.17 at 1.6), below Orendurff et al. 2004's 2.7-4.8
+/// cm; the norms' own stance hip, put through this leg chain, rises 2.5 / 2.9 / 3.5 / 4.1 cm at
+/// 0.8 / 1.0 / 1.3 / 1.6 m/s, and the walk's mid-stance sits 0.5 cm under theirs
+/// (docs/gait-model.md §12). Session 18's placement of the pelvis over the foot
+/// ([`midstance_offset_cm`]) took the walked range to 3.0 / 3.6 cm at 1.3 / 1.6 m/s with the
+/// double support still as high as the legs reach; session 19's, under the norms' obliquity, to
+/// 3.1 / 3.7 (1.9 at 1.0 m/s, 0.8 at 0.8). Slower, the walk asks the double support 1.05 cm (0.8
+/// m/s and slower) to 1.3 cm (1.0 m/s) under its mid-stance, none again from 1.3 m/s (linear
+/// between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in session 20 with the slow designs
+/// (`gait_curves`), whose pelvis holds its height through late stance and falls late into double
+/// support, as people's does; the walked range at 0.8 m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31),
+/// at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50). On stairs (`on_stairs`) none at any speed ([`STAIRS`]).
 pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     if on_stairs { 0.0 } else { through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps) }
 }
@@ -105,35 +106,28 @@ pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
 /// session-19 slow designs (`gait_curves::CurveName::default_curve_for`) the stairs walk as
 /// they did: 7.8°. Neither calibration is fitted to stair data (none in the repository).
 pub(crate) struct StairsLaws {
-    /// Knots of [`midstance_offset_cm`] on stairs.
-    pub(crate) midstance_offset_cm: [(f64, f64); 8],
-    /// Knots of [`heel_rise_phase`] on stairs.
-    pub(crate) heel_rise_phase: [(f64, f64); 8],
+    /// The 0.8 and 1.0 m/s knots of [`midstance_offset_cm`] on stairs.
+    pub(crate) midstance_offset_cm: [(f64, f64); 2],
+    /// The 0.8 and 1.0 m/s knots of [`heel_rise_phase`] on stairs.
+    pub(crate) heel_rise_phase: [(f64, f64); 2],
 }
 
-/// Session 19's knots, kept for stairs ([`StairsLaws`]); from 1.3 m/s they are the level walk's.
-pub(crate) const STAIRS: StairsLaws = StairsLaws {
-    midstance_offset_cm: [
-        (0.4, 12.0),
-        (0.8, 16.2),
-        (1.0, 12.67),
-        (1.15, 12.12),
-        (1.3, 12.36),
-        (1.6, 14.3),
-        (1.75, 14.29),
-        (2.0, 14.29),
-    ],
-    heel_rise_phase: [
-        (0.4, 0.31),
-        (0.8, 0.31),
-        (1.0, 0.312),
-        (1.15, 0.305),
-        (1.3, 0.30),
-        (1.6, 0.28),
-        (1.75, 0.293),
-        (2.0, 0.293),
-    ],
-};
+/// Session 19's 0.8 and 1.0 m/s knots, kept for stairs ([`StairsLaws`]); every other knot is
+/// the level walk's ([`knots_on`]).
+pub(crate) const STAIRS: StairsLaws =
+    StairsLaws { midstance_offset_cm: [(0.8, 16.2), (1.0, 12.67)], heel_rise_phase: [(0.8, 0.31), (1.0, 0.312)] };
+
+/// A law's `level` knots, on stairs (`on_stairs`) with its 0.8 and 1.0 m/s knots (the second
+/// and third) taken from `stairs`: spliced, not copied whole, so that a knot refitted for the
+/// level walk from 1.15 m/s on is the stairs' too.
+fn knots_on(level: &[(f64, f64); 8], stairs: [(f64, f64); 2], on_stairs: bool) -> [(f64, f64); 8] {
+    let mut knots = *level;
+    if on_stairs {
+        debug_assert!(knots[1].0 == stairs[0].0 && knots[2].0 == stairs[1].0, "the 0.8 and 1.0 m/s knots");
+        knots[1..3].copy_from_slice(&stairs);
+    }
+    knots
+}
 
 /// The cycle phase at which the stance heel rises at `speed_mps`: linear between
 /// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.329.
@@ -144,9 +138,9 @@ pub(crate) const STAIRS: StairsLaws = StairsLaws {
 /// 1.25x the steady walks' joint jerk (`tests/gait_normal.rs` allows 1.2x); at 1.6 m/s it is
 /// held at 0.28 so a slowdown from 1.6 m/s (`tests/pace.rs`, 0.8 -> 1.6 -> 1.0 m/s) swings the
 /// trailing hip no faster per frame than 1.2x a steady walk.
-/// On stairs (`on_stairs`) the knots of session 19 ([`STAIRS`]).
+/// On stairs (`on_stairs`) the 0.8 and 1.0 m/s knots of session 19 ([`STAIRS`]).
 pub(crate) fn heel_rise_phase(speed_mps: f64, on_stairs: bool) -> f64 {
-    through_knots(if on_stairs { &STAIRS.heel_rise_phase } else { &HEEL_RISE_PHASE_KNOTS }, speed_mps)
+    through_knots(&knots_on(&HEEL_RISE_PHASE_KNOTS, STAIRS.heel_rise_phase, on_stairs), speed_mps)
 }
 
 /// How far ahead of the swing-forward design curve the swing heel moves at `speed_mps`

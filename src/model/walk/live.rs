@@ -4,12 +4,12 @@
 //! step takes the new values from the next toe-off.
 
 use crate::model::curve::{Curve, LiveCurve};
-use crate::model::gait_curves::{CurveName, CurveSet};
-use crate::model::params::{TerrainChoice, WalkParams};
+use crate::model::gait_curves::CurveName;
+use crate::model::params::WalkParams;
 use crate::model::walk::gait::{cycle_targets, trajectory_curves};
 use crate::model::walk::leg::{LegPhase, PhaseBounds};
 use crate::model::walk::upper::ArmHang;
-use crate::model::walk::{ModelError, Walker};
+use crate::model::walk::{ModelError, Walker, check};
 
 impl Walker {
     /// A cycle curve being played, in real units (for plots): pelvis obliquity, rotation,
@@ -56,13 +56,8 @@ impl Walker {
         if params.body != self.params.body || params.terrain != self.params.terrain {
             return Ok(false);
         }
-        let r = params.resolve();
-        let design = CurveSet::with_overrides(
-            &params.curves,
-            params.walk.speed_mps,
-            params.terrain.kind == TerrainChoice::Stairs,
-        )
-        .map_err(|e| ModelError(e.to_string()))?;
+        // What a new walker is built from, by the same checks (stairs or not, the phases in order).
+        let (r, design) = check(params)?;
         let p_right = phase.rem_euclid(1.0);
         let p_left = (phase - 0.5).rem_euclid(1.0);
         self.gait.live.change_to(cycle_targets(&design, &r), p_right, p_left);
