@@ -42,6 +42,9 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // (measured against the pelvis): default 1.88 -> 1.64, stroll 2.54 -> 2.16, brisk 2.89 ->
     // 2.84, 0.8 m/s 2.50 -> 2.25, 1.0 2.68 -> 2.19, 1.6 2.30 -> 2.24 deg, r up 0.001-0.004; the
     // hip bounds below are tightened to it, the figures in the comments are from before it.
+    // Session 21, the heel rise's reach softening brought in over 0.3 of its phase (0.1, the
+    // knee's notch at the heel rise): within 0.1 deg of these but the 1.6 m/s hip, 2.24 -> 2.38,
+    // and brisk's, 2.84 -> 2.97.
     let cases: [(&str, &[&str], Bounds); 7] = [
         // 1.88 / 0.996 / 0; 3.94 / 0.987 / 10; 2.08 / 0.977 / 0 (session 19, the norms' pelvic
         // obliquity, its RMS 2.25 -> 0.35 deg, the designs refitted to it, and the norms' rotation

@@ -122,7 +122,8 @@ pub struct App {
     pub landscape: Option<(i64, Vec<Candidate>)>,
     /// A re-run of the optimiser on the last step, with the method it used.
     pub rerun: Option<StepRecord>,
-    /// Frames drawn per second, measured by the loop (`None` in tests: nothing to measure).
+    /// Walk frames drawn per second, measured by the loop (`None` in tests: nothing to
+    /// measure); redraws for keys and the mouse are not frames of the walk.
     pub measured_fps: Option<f64>,
     /// First line of the help shown (it scrolls on short terminals).
     pub(crate) help_scroll: u16,

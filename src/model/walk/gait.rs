@@ -28,6 +28,17 @@ pub const MIN_STRIKE_ANGLE: f64 = 0.035;
 /// the limit instead of clamping at it (for equal bones: knee 11.5° down to the 3.2° limit).
 pub(crate) const REACH_EASE: f64 = 0.995;
 
+/// Share of the heel-rise phase over which [`REACH_EASE`]'s softening comes in. Midstance
+/// leaves the knee at the reach limit (3.2°) and the softening holds it near 7°; brought in
+/// over 0.1 of the phase (before session 21) the knee flexed those 4° within two frames, a
+/// notch at 30-33 % of the cycle in every joint plot: its largest acceleration there 2.2 /
+/// 5.6 / 7.0 / 7.7°/frame² at 0.8 / 1.3 / 1.6 / 1.75 m/s, the steady walk's largest
+/// anywhere 7.9 at 1.6. Over 0.3: 1.1 / 3.2 / 4.3 / 4.5, the joint curves' RMS against the
+/// norms within 0.1° but the 1.6 m/s hip (+0.14). A knee eased nearer the limit (0.998,
+/// people's knee goes on straightening to 3° at 40-44 %) took stairs_up's push-off from 7.8
+/// to 5.2° and the fast walks' hip 0.3° further from the norms (docs/gait-model.md §12).
+const HEEL_RISE_EASE_IN: f64 = 0.3;
+
 /// How far inside full reach (m) a stance leg past it is brought by rolling its foot: the
 /// IK's own tolerance is 1e-9 m.
 const REACH_RESCUE_GAP: f64 = 1e-7;
@@ -260,10 +271,10 @@ impl Gait {
                 // squared accelerations then see as a spike wherever it falls between two
                 // samples — but eased in: from REACH_EASE of the limit on, the hip-ankle
                 // distance follows the softening curve that approaches the limit with slope 1
-                // at its start, ramped in over the first tenth of the phase so that nothing
-                // jumps when heel rise begins.
+                // at its start, ramped in over the first [`HEEL_RISE_EASE_IN`] of the phase so
+                // that nothing jumps when heel rise begins.
                 let d0 = hip.distance(ankle_at(angle));
-                let ramp = (s / 0.1).clamp(0.0, 1.0);
+                let ramp = (s / HEEL_RISE_EASE_IN).clamp(0.0, 1.0);
                 let ramp = ramp * ramp * (3.0 - 2.0 * ramp);
                 let eased = d0 - ramp * (d0 - softened_distance(d0, limit, REACH_EASE));
                 let wanted = eased.min(limit);
