@@ -324,6 +324,32 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     }
 }
 
+/// The pelvis range the joint curves alone account for (`normative::pelvis_range_through_legs`,
+/// compare's "through this body's legs" line): put through the walk's legs, the walk's own mean
+/// angles give a range within 0.3 cm above what it walks (the chain leaves out the hips'
+/// ab/adduction and the foot's roll: measured session 21, +0.20 / +0.20 / +0.20 / +0.25 / +0.21
+/// cm at 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s), and from 0.8 to 1.3 m/s within 10 % of what people's
+/// mean angles give (2.19 / 2.40 / 3.32 cm against 2.27 / 2.65 / 3.41): there the walk's joint
+/// curves are not what holds its pelvis under the adults' markers (2.54 / 2.91 / 3.56 cm),
+/// and the chain fed people's own angles falls short of their markers by 0.27 / 0.26 / 0.15 cm
+/// too. At 1.6 m/s the walk's angles give 3.92 cm against people's 4.71: room the fast walk
+/// leaves.
+#[test]
+fn the_walk_s_joint_curves_give_its_pelvis_nearly_the_range_people_s_give_through_its_legs() {
+    for speed in [0.7, 0.8, 1.0, 1.3, 1.6] {
+        let set = format!("walk.speed_mps={speed}");
+        let c = compare("configs/default.toml", &[set.as_str()]);
+        let (people, walk) = c.pelvis_range_through_legs_cm.expect("compare measures it");
+        let walked = c.pelvis_vertical_range_cm;
+        assert!((0.1..0.3).contains(&(walk - walked)), "{speed} m/s: through the legs {walk:.2}, walked {walked:.2}");
+        if (0.8..=1.3).contains(&speed) {
+            assert!(walk >= 0.9 * people, "{speed} m/s: the walk's angles give {walk:.2} cm, people's {people:.2}");
+            let markers = c.pelvis_norms.vertical_range_cm.0;
+            assert!(people < markers, "{speed} m/s: people's angles {people:.2} cm, their markers {markers:.2}");
+        }
+    }
+}
+
 /// Pelvic obliquity: the norms' own shape and range at every speed (session 19,
 /// `PELVIS_OBLIQUITY_KEYS` and `speed_laws::obliquity_range_deg`). Measured: RMS 0.36 / 0.22 /
 /// 0.35 / 0.44 / 0.38 deg, r 0.996-0.999, range within 0.13 deg of the norms' at 0.8 / 1.0 / 1.3

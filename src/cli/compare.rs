@@ -49,6 +49,9 @@ fn write_figures(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         p.vertical_range_cm.1,
         sd_units(c.pelvis_vertical_range_cm, p.vertical_range_cm)
     )?;
+    if let Some(sentence) = normative::through_legs_sentence(c) {
+        writeln!(out, "# {sentence}")?;
+    }
     Ok(())
 }
 
@@ -141,6 +144,10 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         line["pelvis_vertical_range_norm_sd_cm"] = p.vertical_range_cm.1.into();
         line["pelvis_norm_from_block_mps"] = p.from_block_mps.into();
         line["pelvis_norm_to_block_mps"] = p.to_block_mps.into();
+        if let Some((people, walk)) = c.pelvis_range_through_legs_cm.filter(|(a, b)| a.is_finite() && b.is_finite()) {
+            line["pelvis_vertical_range_legs_norm_cm"] = people.into();
+            line["pelvis_vertical_range_legs_walk_cm"] = walk.into();
+        }
         if let Some(part) = &c.steady_part {
             line["steady_part"] = part.as_str().into();
         }

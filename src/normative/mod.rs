@@ -18,14 +18,17 @@
 //! same adults' measured one ([`PelvisNorms`]).
 
 mod blocks;
+mod legs;
 mod pelvis;
 
 use blocks::{blocks_used, bracket, parse_rows};
 
+pub use legs::{LegAngles, pelvis_range_through_legs};
 pub use pelvis::{PELVIS_NORMS_SOURCE, PelvisAtSpeed, PelvisNorms};
 
 use crate::analysis::Run;
 use crate::error::{Error, Result};
+use crate::model::body::BodyDims;
 use crate::model::params::{TerrainChoice, WalkParams};
 use crate::model::terrain::TerrainKind;
 use crate::report::metrics::Summary;
@@ -335,6 +338,11 @@ pub struct Comparison {
     pub pelvis_vertical_range_cm: f64,
     /// People's pelvis vertical range at the walk's speed.
     pub pelvis_norms: PelvisAtSpeed,
+    /// The pelvis vertical range (cm) that the reference's mean angles and the walk's own give
+    /// through the walk's legs, each leg standing for the walk's stance share
+    /// ([`pelvis_range_through_legs`]): what the joint curves alone account for. `None` where
+    /// the body is not known ([`compare_measured`]).
+    pub pelvis_range_through_legs_cm: Option<(f64, f64)>,
     /// The walk was on level ground, as the norms' treadmill walking was; false on stairs,
     /// slopes and rough ground, where the differences include what the terrain asks.
     pub level_ground: bool,
@@ -369,8 +377,10 @@ fn range(v: &[f64]) -> f64 {
 /// Walks `params` (the config at `path`) for its `sim.cycles` and compares it with `reference`
 /// every 2 % of the right gait cycle.
 pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Result<Comparison> {
-    let mut c = compare_measured(&measure::measure(path, params)?, reference);
+    let walk = measure::measure(path, params)?;
+    let mut c = compare_measured(&walk, reference);
     c.level_ground = params.terrain.kind == TerrainChoice::Flat;
+    c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims));
     Ok(c)
 }
 
@@ -383,9 +393,47 @@ pub fn compare_recorded(
     summary: &Summary,
     reference: &References,
 ) -> Result<Comparison> {
-    let mut c = compare_measured(&measure::recorded(path, cycles, run, summary)?, reference);
+    let walk = measure::recorded(path, cycles, run, summary)?;
+    let mut c = compare_measured(&walk, reference);
     c.level_ground = matches!(run.terrain.kind(), TerrainKind::Flat);
+    let dims = &run.gait.resolved().dims;
+    c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), dims));
     Ok(c)
+}
+
+/// The pelvis range the joint curves alone give, people's and the walk's, as `compare` and the
+/// report's summary say it; `None` where it was not measured.
+#[must_use]
+pub fn through_legs_sentence(c: &Comparison) -> Option<String> {
+    let (people, walk) = c.pelvis_range_through_legs_cm?;
+    (people.is_finite() && walk.is_finite()).then(|| {
+        format!(
+            "through this body's legs (sagittal angles and obliquity, rigid feet, the walk's stance) people's mean angles give the pelvis a vertical range of {people:.2} cm, the walk's own {walk:.2} cm: what the joint curves alone account for"
+        )
+    })
+}
+
+/// The pelvis range `reference`'s mean angles and `walk`'s own give through the legs of
+/// `dims`, both standing for the walk's stance share (the norms give none by speed).
+fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims) -> (f64, f64) {
+    let stance_share = walk.summary.iter().find(|(k, _)| k == "stance_pct").map_or(0.62, |(_, v)| v / 100.0);
+    let ours = |name: &str| walk.curves.iter().find(|(n, _)| n == name).map_or(&[][..], |c| c.1.as_slice());
+    let theirs = |stem: &str| reference.curves.iter().find(|c| c.0 == stem).map_or(&[][..], |c| c.1.as_slice());
+    let people = LegAngles {
+        hip_flex: theirs("hip_flex"),
+        knee_flex: theirs("knee_flex"),
+        ankle_dorsi: theirs("ankle_dorsi"),
+        pelvis_tilt: theirs("pelvis_tilt_ant"),
+        pelvis_obliquity: theirs("pelvis_obliq_up"),
+    };
+    let walked = LegAngles {
+        hip_flex: ours("hip_flex_r_deg"),
+        knee_flex: ours("knee_flex_r_deg"),
+        ankle_dorsi: ours("ankle_dorsi_r_deg"),
+        pelvis_tilt: ours("pelvis_tilt_deg"),
+        pelvis_obliquity: ours("pelvis_obliquity_deg"),
+    };
+    (pelvis_range_through_legs(&people, dims, stance_share), pelvis_range_through_legs(&walked, dims, stance_share))
 }
 
 /// A walk already measured against `references` at the speed it walked (the fit measures
@@ -437,6 +485,7 @@ pub fn compare_measured(walk: &measure::Snapshot, references: &References) -> Co
     Comparison {
         pelvis_vertical_range_cm: figure("pelvis_vertical_range_cm"),
         pelvis_norms: PelvisNorms::built_in().at(speed_mps),
+        pelvis_range_through_legs_cm: None,
         speed_mps,
         reference_speed_mps: reference.speed_mps,
         reference_blocks_mps: reference.blocks_mps,

@@ -135,6 +135,9 @@ fn spatiotemporal(md: &mut String, c: &Comparison) {
         normative::PELVIS_NORMS_SOURCE,
         p.blocks_used()
     );
+    if let Some(sentence) = normative::through_legs_sentence(c) {
+        let _ = writeln!(md, "{}{}.", sentence[..1].to_uppercase(), &sentence[1..]);
+    }
 }
 
 fn row(md: &mut String, k: &CurveComparison) {

@@ -1,0 +1,135 @@
+//! The pelvis's rise and fall that a cycle of joint angles gives through this body's legs.
+//!
+//! People's pelvis (the WBDS adults' markers, [`super::PelvisNorms`]) rises and falls more
+//! than the walk's at slow speeds, and the question a user then has is whether the walk's
+//! joint curves are what holds it down. Put through the walk's own leg chain, people's mean
+//! angles answer it: if they give no more range than the walk's own angles do, matching the
+//! angles better cannot raise the pelvis, and the rest of the gap lies in what the chain
+//! leaves out (a foot that rolls over its toes, soft tissue, the markers' place on the pelvis)
+//! or in the difference between the adults whose angles were averaged (22) and those whose
+//! pelvis markers were (5). The chain is the sagittal one the walk's legs solve: thigh, shank
+//! and a rigid foot standing on whichever of heel and ball is lower, the pelvic obliquity
+//! lifting one hip over the other; the hips' ab/adduction and the turnout, which the norms do
+//! not give, are left out of both.
+
+use crate::model::body::{BALL_FRACTION, BodyDims, HEEL_FRACTION};
+
+/// One gait cycle of clinical angles (deg), sampled evenly from the right heel strike; a
+/// last sample at 100 % (the next heel strike) may be included. Hip flexion and pelvic tilt as
+/// gait labs measure them (both against the pelvis's anatomical frame, so that their
+/// difference is the thigh's angle from the vertical); obliquity positive with the right hip up.
+#[derive(Clone, Copy, Debug)]
+pub struct LegAngles<'a> {
+    /// Right hip flexion.
+    pub hip_flex: &'a [f64],
+    /// Right knee flexion.
+    pub knee_flex: &'a [f64],
+    /// Right ankle dorsiflexion.
+    pub ankle_dorsi: &'a [f64],
+    /// Anterior pelvic tilt.
+    pub pelvis_tilt: &'a [f64],
+    /// Pelvic obliquity, right hip up.
+    pub pelvis_obliquity: &'a [f64],
+}
+
+/// Samples the range is measured at over the cycle.
+const SAMPLES: usize = 200;
+
+/// The pelvis's vertical range (cm) that `angles` give through the legs of `dims`, each leg
+/// standing from its heel strike to `stance_share` of its cycle (the left half a cycle after
+/// the right, mirrored): at each instant the pelvis centre sits as high as the lower of its
+/// stance legs holds it. NaN when a curve has fewer than two samples.
+#[must_use]
+pub fn pelvis_range_through_legs(angles: &LegAngles<'_>, dims: &BodyDims, stance_share: f64) -> f64 {
+    let a = angles;
+    if [a.hip_flex, a.knee_flex, a.ankle_dorsi, a.pelvis_tilt, a.pelvis_obliquity].iter().any(|c| c.len() < 2) {
+        return f64::NAN;
+    }
+    let hip_height = |phase: f64| {
+        let at = |curve: &[f64]| sample(curve, phase).to_radians();
+        let thigh = at(angles.hip_flex) - at(angles.pelvis_tilt);
+        let shank = thigh - at(angles.knee_flex);
+        let pitch = shank + at(angles.ankle_dorsi);
+        // The ankle's height over a point of the sole `ahead` of the ankle (m, + forward).
+        let over = |ahead: f64| dims.ankle_height * pitch.cos() - ahead * pitch.sin();
+        let ankle =
+            over(-HEEL_FRACTION * dims.foot_length).max(over((BALL_FRACTION - HEEL_FRACTION) * dims.foot_length));
+        dims.thigh * thigh.cos() + dims.shank * shank.cos() + ankle
+    };
+    let half_width = 0.5 * dims.hip_width;
+    let heights: Vec<f64> = (0..SAMPLES)
+        .filter_map(|i| {
+            let phase = i as f64 / SAMPLES as f64;
+            let lift = half_width * sample(angles.pelvis_obliquity, phase).to_radians().sin();
+            let left_phase = (phase + 0.5).fract();
+            let right = (phase < stance_share).then(|| hip_height(phase) - lift);
+            let left = (left_phase < stance_share).then(|| hip_height(left_phase) + lift);
+            match (right, left) {
+                (Some(r), Some(l)) => Some(r.min(l)),
+                (r, l) => r.or(l),
+            }
+        })
+        .collect();
+    let highest = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let lowest = heights.iter().copied().fold(f64::INFINITY, f64::min);
+    100.0 * (highest - lowest)
+}
+
+/// `curve` (evenly over the cycle, its last sample at 100 % when it has 51 or 101) at `phase`
+/// (0-1), linearly between samples.
+fn sample(curve: &[f64], phase: f64) -> f64 {
+    let spans = if matches!(curve.len(), 51 | 101) { curve.len() - 1 } else { curve.len() };
+    let x = phase.rem_euclid(1.0) * spans as f64;
+    let i = (x.floor() as usize).min(spans - 1);
+    let next = curve[(i + 1) % curve.len()];
+    curve[i] + (next - curve[i]) * (x - i as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::body::Sex;
+
+    fn flat(v: f64, n: usize) -> Vec<f64> {
+        vec![v; n]
+    }
+
+    #[test]
+    fn still_legs_hold_the_pelvis_still_and_a_bent_knee_lowers_it_by_the_chain() {
+        let d = BodyDims::from_height(1.75, Sex::Male);
+        let zero = flat(0.0, 101);
+        let still = LegAngles {
+            hip_flex: &zero,
+            knee_flex: &zero,
+            ankle_dorsi: &zero,
+            pelvis_tilt: &zero,
+            pelvis_obliquity: &zero,
+        };
+        assert!(pelvis_range_through_legs(&still, &d, 0.62).abs() < 1e-12);
+        // The right knee bent 20° through its mid-stance, the ankle dorsiflexed as far to keep
+        // the foot flat (the left's the same half a cycle on): in single support the pelvis
+        // drops by the shank's loss of height, shank (1 - cos 20°).
+        let knee: Vec<f64> = (0..=100).map(|p| if (15..=35).contains(&p) { 20.0 } else { 0.0 }).collect();
+        let bent = LegAngles { knee_flex: &knee, ankle_dorsi: &knee, ..still };
+        let drop = 100.0 * (d.shank * (1.0 - 20f64.to_radians().cos()));
+        assert!((pelvis_range_through_legs(&bent, &d, 0.62) - drop).abs() < 1e-9, "{drop}");
+        // Obliquity alone: the pelvis centre sits under the raised stance hip by half the hip
+        // width's sine, and the double supports hold it on the lower leg.
+        let obliquity: Vec<f64> =
+            (0..=100).map(|p| 4.0 * (f64::from(p) * std::f64::consts::TAU / 100.0).sin()).collect();
+        let tilted = LegAngles { pelvis_obliquity: &obliquity, ..still };
+        let range = pelvis_range_through_legs(&tilted, &d, 0.62);
+        let most = 100.0 * 0.5 * d.hip_width * 4f64.to_radians().sin();
+        assert!(range > 0.5 * most && range <= 2.0 * most + 1e-9, "{range} against {most}");
+    }
+
+    #[test]
+    fn samples_are_read_between_points_and_around_the_cycle() {
+        let c: Vec<f64> = (0..=50).map(f64::from).collect();
+        assert!((sample(&c, 0.5) - 25.0).abs() < 1e-12);
+        assert!((sample(&c, 0.51) - 25.5).abs() < 1e-12);
+        assert!((sample(&c, 1.25) - 12.5).abs() < 1e-12);
+        let no_end = [0.0, 1.0, 2.0, 3.0];
+        assert!((sample(&no_end, 0.875) - 1.5).abs() < 1e-12, "wraps to the first");
+    }
+}
