@@ -325,29 +325,30 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
 }
 
 /// The pelvis range the joint curves alone account for (`normative::pelvis_range_through_legs`,
-/// compare's "through this body's legs" line): put through the walk's legs, the walk's own mean
-/// angles give a range within 0.3 cm above what it walks (the chain leaves out the hips'
-/// ab/adduction and the foot's roll: measured session 21, +0.20 / +0.20 / +0.20 / +0.25 / +0.21
-/// cm at 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s), and from 0.8 to 1.3 m/s within 10 % of what people's
-/// mean angles give (2.19 / 2.40 / 3.32 cm against 2.27 / 2.65 / 3.41): there the walk's joint
-/// curves are not what holds its pelvis under the adults' markers (2.54 / 2.91 / 3.56 cm),
-/// and the chain fed people's own angles falls short of their markers by 0.27 / 0.26 / 0.15 cm
-/// too. At 1.6 m/s the walk's angles give 3.92 cm against people's 4.71: room the fast walk
-/// leaves.
+/// compare's "joint curves alone" line): put through the walk's legs, the walk's own mean
+/// angles give within 0.2 cm of what it walks (the chain leaves out the hips' ab/adduction and
+/// the trailing foot's roll: measured session 21, +0.16 / +0.15 / +0.14 / +0.04 / -0.07 cm at
+/// 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s), and from 0.8 to 1.6 m/s at least 85 % of what people's mean
+/// angles give (2.14 / 2.34 / 3.11 / 3.64 cm against 2.27 / 2.65 / 3.18 / 3.82): the walk's joint
+/// curves are not what holds its pelvis under the adults' markers (2.54 / 2.91 / 3.56 / 4.53
+/// cm), which people's own angles through this chain fall short of too, by 0.26-0.71 cm.
 #[test]
 fn the_walk_s_joint_curves_give_its_pelvis_nearly_the_range_people_s_give_through_its_legs() {
     for speed in [0.7, 0.8, 1.0, 1.3, 1.6] {
         let set = format!("walk.speed_mps={speed}");
         let c = compare("configs/default.toml", &[set.as_str()]);
-        let (people, walk) = c.pelvis_range_through_legs_cm.expect("compare measures it");
+        let (people, walk) = c.pelvis_range_through_legs_cm.expect("compare measures it on level ground");
         let walked = c.pelvis_vertical_range_cm;
-        assert!((0.1..0.3).contains(&(walk - walked)), "{speed} m/s: through the legs {walk:.2}, walked {walked:.2}");
-        if (0.8..=1.3).contains(&speed) {
-            assert!(walk >= 0.9 * people, "{speed} m/s: the walk's angles give {walk:.2} cm, people's {people:.2}");
+        assert!((walk - walked).abs() < 0.2, "{speed} m/s: through the legs {walk:.2}, walked {walked:.2}");
+        if speed >= 0.8 {
+            assert!(walk >= 0.85 * people, "{speed} m/s: the walk's angles give {walk:.2} cm, people's {people:.2}");
             let markers = c.pelvis_norms.vertical_range_cm.0;
-            assert!(people < markers, "{speed} m/s: people's angles {people:.2} cm, their markers {markers:.2}");
+            assert!(people < markers - 0.2, "{speed} m/s: people's angles {people:.2} cm, their markers {markers:.2}");
         }
     }
+    // Off level ground the chain does not stand: no figure.
+    let c = compare("configs/slope_up.toml", &[]);
+    assert_eq!(c.pelvis_range_through_legs_cm, None);
 }
 
 /// Pelvic obliquity: the norms' own shape and range at every speed (session 19,

@@ -194,7 +194,7 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         sets: Vec<String>,
     },
-    /// The walk's joint curves against measured human gait (the reference's mean +- SD, read every 2 % of the cycle)
+    /// The walk's joint curves against measured human gait (the reference's mean +- SD, read every 2 % of the cycle); above the table the walk's cadence, stride, stance and pelvis vertical range beside people's, and on level ground the pelvis range the joint curves alone give through this body's legs
     Compare {
         /// Config file.
         config: PathBuf,

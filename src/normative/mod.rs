@@ -339,9 +339,9 @@ pub struct Comparison {
     /// People's pelvis vertical range at the walk's speed.
     pub pelvis_norms: PelvisAtSpeed,
     /// The pelvis vertical range (cm) that the reference's mean angles and the walk's own give
-    /// through the walk's legs, each leg standing for the walk's stance share
-    /// ([`pelvis_range_through_legs`]): what the joint curves alone account for. `None` where
-    /// the body is not known ([`compare_measured`]).
+    /// through the walk's legs ([`pelvis_range_through_legs`]): what the joint curves alone
+    /// account for. `None` off level ground, where the chain does not stand, and where the
+    /// body is not known ([`compare_measured`]).
     pub pelvis_range_through_legs_cm: Option<(f64, f64)>,
     /// The walk was on level ground, as the norms' treadmill walking was; false on stairs,
     /// slopes and rough ground, where the differences include what the terrain asks.
@@ -380,7 +380,9 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Resu
     let walk = measure::measure(path, params)?;
     let mut c = compare_measured(&walk, reference);
     c.level_ground = params.terrain.kind == TerrainChoice::Flat;
-    c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims));
+    if c.level_ground {
+        c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims));
+    }
     Ok(c)
 }
 
@@ -396,27 +398,28 @@ pub fn compare_recorded(
     let walk = measure::recorded(path, cycles, run, summary)?;
     let mut c = compare_measured(&walk, reference);
     c.level_ground = matches!(run.terrain.kind(), TerrainKind::Flat);
-    let dims = &run.gait.resolved().dims;
-    c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), dims));
+    if c.level_ground {
+        let dims = &run.gait.resolved().dims;
+        c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), dims));
+    }
     Ok(c)
 }
 
 /// The pelvis range the joint curves alone give, people's and the walk's, as `compare` and the
-/// report's summary say it; `None` where it was not measured.
+/// report's summary say it; `None` where it was not measured (off level ground, or no body).
 #[must_use]
 pub fn through_legs_sentence(c: &Comparison) -> Option<String> {
     let (people, walk) = c.pelvis_range_through_legs_cm?;
     (people.is_finite() && walk.is_finite()).then(|| {
         format!(
-            "through this body's legs (sagittal angles and obliquity, rigid feet, the walk's stance) people's mean angles give the pelvis a vertical range of {people:.2} cm, the walk's own {walk:.2} cm: what the joint curves alone account for"
+            "the joint curves alone, put through this body's legs (sagittal chain, pelvic obliquity, rigid feet): the reference's mean angles would give the pelvis a vertical range of {people:.2} cm, the walk's own angles {walk:.2} cm; where the two are close, closer joint curves cannot raise the walk's pelvis"
         )
     })
 }
 
 /// The pelvis range `reference`'s mean angles and `walk`'s own give through the legs of
-/// `dims`, both standing for the walk's stance share (the norms give none by speed).
+/// `dims` (level ground only: the chain stands on flat ground).
 fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims) -> (f64, f64) {
-    let stance_share = walk.summary.iter().find(|(k, _)| k == "stance_pct").map_or(0.62, |(_, v)| v / 100.0);
     let ours = |name: &str| walk.curves.iter().find(|(n, _)| n == name).map_or(&[][..], |c| c.1.as_slice());
     let theirs = |stem: &str| reference.curves.iter().find(|c| c.0 == stem).map_or(&[][..], |c| c.1.as_slice());
     let people = LegAngles {
@@ -433,7 +436,7 @@ fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims
         pelvis_tilt: ours("pelvis_tilt_deg"),
         pelvis_obliquity: ours("pelvis_obliquity_deg"),
     };
-    (pelvis_range_through_legs(&people, dims, stance_share), pelvis_range_through_legs(&walked, dims, stance_share))
+    (pelvis_range_through_legs(&people, dims), pelvis_range_through_legs(&walked, dims))
 }
 
 /// A walk already measured against `references` at the speed it walked (the fit measures

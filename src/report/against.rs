@@ -136,7 +136,7 @@ fn spatiotemporal(md: &mut String, c: &Comparison) {
         p.blocks_used()
     );
     if let Some(sentence) = normative::through_legs_sentence(c) {
-        let _ = writeln!(md, "{}{}.", sentence[..1].to_uppercase(), &sentence[1..]);
+        let _ = writeln!(md, "\n{}{}.", sentence[..1].to_uppercase(), &sentence[1..]);
     }
 }
 
