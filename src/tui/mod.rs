@@ -9,6 +9,7 @@ pub mod app;
 mod editing;
 pub mod effects;
 pub mod export;
+mod frame_clock;
 pub mod keys;
 pub mod mouse;
 pub mod msg;
@@ -25,6 +26,7 @@ pub mod watch;
 
 use crate::config::{self, presets};
 use app::App;
+use frame_clock::FrameClock;
 use ratatui::Terminal;
 use ratatui::backend::{Backend, CrosstermBackend};
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event, KeyEventKind, MouseEventKind};
@@ -217,10 +219,8 @@ fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Res
     // Not `terminal.clear()`: it asks the terminal for the cursor position first, and a
     // terminal that never answers (some web and serial consoles) would stop the lab there.
     execute!(terminal.backend_mut(), Clear(ClearType::All))?;
-    let frame_interval = Duration::from_secs_f64(1.0 / options.fps);
-    let mut last_tick = Instant::now();
+    let mut clock = FrameClock::new(options.fps, Instant::now());
     let mut dirty = true;
-    let mut rate = WalkFrameRate::new(Instant::now());
     // A way to panic on purpose, so that the restore-on-panic path can be tested through a
     // real terminal (`tests/tui_pty.rs`); nothing else sets it.
     let panic_for_test = std::env::var_os("GAITLAB_TEST_PANIC").is_some();
@@ -230,14 +230,14 @@ fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Res
         if dirty {
             draw(&mut terminal, app, options.marker)?;
             dirty = false;
-            rate.drawn();
+            clock.drawn();
             assert!(!panic_for_test, "GAITLAB_TEST_PANIC is set: panicking after the first frame");
         }
         let walking = !app.paused;
         // Idle: wake once a second only to notice a signal; nothing is drawn. A report being
         // written is polled ten times a second for its progress.
         let timeout = if walking {
-            frame_interval.saturating_sub(last_tick.elapsed())
+            clock.until_due(Instant::now())
         } else if app.exporting() {
             Duration::from_millis(100)
         } else {
@@ -259,82 +259,13 @@ fn event_loop(app: &mut App, options: &Options, watch: &watch::Watch) -> io::Res
         dirty |= app.poll_export();
         let now = Instant::now();
         if app.paused {
-            last_tick = now;
-        } else if now.duration_since(last_tick) >= frame_interval {
-            // A long stall (suspended, slow link) is not replayed at once: at most 0.25 s.
-            let elapsed = now.duration_since(last_tick).as_secs_f64().min(0.25);
-            last_tick = now;
+            clock.pause(now);
+        } else if let Some(elapsed) = clock.due(now) {
             dirty |= app.tick(elapsed);
-            rate.walked();
         }
-        if let Some(fps) = rate.per_second(Instant::now()) {
+        if let Some(fps) = clock.rate(now) {
             app.measured_fps = Some(fps);
         }
     }
     Ok(())
-}
-
-/// The walk's frame rate as drawn: frames that showed a newer walk, per second. Redraws for
-/// keys, the mouse or a resize show no new frame, and counting them had the status line
-/// read 48 fps while keys were typed into a lab capped at 30.
-struct WalkFrameRate {
-    frames: u32,
-    since: Instant,
-    walked: bool,
-}
-
-impl WalkFrameRate {
-    fn new(now: Instant) -> Self {
-        Self { frames: 0, since: now, walked: false }
-    }
-
-    /// The walk advanced; the next draw shows it.
-    fn walked(&mut self) {
-        self.walked = true;
-    }
-
-    /// A frame was drawn.
-    fn drawn(&mut self) {
-        if std::mem::take(&mut self.walked) {
-            self.frames += 1;
-        }
-    }
-
-    /// The rate over the last second or more, once one has passed at `now`; then counts anew.
-    fn per_second(&mut self, now: Instant) -> Option<f64> {
-        let elapsed = now.duration_since(self.since);
-        if elapsed < Duration::from_secs(1) {
-            return None;
-        }
-        let fps = f64::from(self.frames) / elapsed.as_secs_f64();
-        *self = Self { frames: 0, since: now, walked: self.walked };
-        Some(fps)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_frame_rate_counts_walk_frames_not_redraws_for_keys() {
-        let start = Instant::now();
-        let mut rate = WalkFrameRate::new(start);
-        for i in 0..48 {
-            // 30 walk frames in the second, and 18 redraws for keys between them.
-            if i % 8 < 5 {
-                rate.walked();
-            }
-            rate.drawn();
-        }
-        assert_eq!(rate.per_second(start + Duration::from_millis(999)), None);
-        let fps = rate.per_second(start + Duration::from_secs(1)).expect("a second has passed");
-        assert!((fps - 30.0).abs() < 1e-9, "{fps}");
-        // Two walk steps drawn as one frame (a slow link) count once.
-        rate.walked();
-        rate.walked();
-        rate.drawn();
-        let fps = rate.per_second(start + Duration::from_secs(3)).expect("two more seconds");
-        assert!((fps - 0.5).abs() < 1e-9, "{fps}");
-    }
 }
