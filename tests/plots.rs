@@ -142,6 +142,8 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
         .filter(|n| n.has_tag_name("text") && n.text().is_some_and(|t| t.contains("Fukuchi 2018")))
         .count();
     assert_eq!(legends, 3, "the normative band is named in the hip, knee and ankle charts");
+    let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
+    assert!(texts.iter().all(|t| !t.contains("level ground")), "a level walk's band needs no ground named");
     // The event lines' letters are explained under the charts.
     assert!(doc.descendants().filter_map(|n| n.text()).any(|t| t.contains("LTO left toe-off, LHS left heel strike")));
     // Over 4 cycles (2 measured) the legs differ by 0.5 deg or more somewhere: plain "left".
@@ -161,6 +163,27 @@ fn the_joint_plot_draws_measured_adult_gait_behind_the_walk() {
         .filter_map(|t| t.strip_suffix(" deg)")?.parse().ok())
         .collect();
     assert!(under.len() == 3 && under.iter().all(|d| (0.0..=0.5).contains(d)), "{under:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Off level ground the bands are still level walkers': each legend says so (a stairs walk's
+/// knee against a band named only "adults at 0.80 m/s" read as a 40° error).
+#[test]
+fn the_bands_of_a_walk_off_level_ground_say_the_adults_walked_on_level_ground() {
+    let dir = std::env::temp_dir().join(format!("gaitlab-plots-stairs-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    report_of(&dir, &["configs/stairs_up.toml", "--cycles", "6"]);
+    for (plot, bands) in [("joints", 3), ("pelvis", 4)] {
+        let svg = std::fs::read_to_string(dir.join(format!("plots/{plot}.svg"))).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let named = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .filter_map(|n| n.text())
+            .filter(|t| t.trim_start().starts_with("adults") && t.contains("on level ground"))
+            .count();
+        assert_eq!(named, bands, "{plot}: every band names the level ground");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

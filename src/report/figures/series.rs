@@ -220,7 +220,11 @@ pub(super) fn ankle(own: &Recording) -> Result<Made, String> {
     let lower = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m - s));
     let upper: Vec<(f64, f64)> = mean.iter().zip(sd).enumerate().map(|(i, (m, s))| (i as f64, m + s)).collect();
     let band = Band {
-        name: format!("adults at {:.2} m/s, Fukuchi 2018 (mean ±1 SD)", reference.speed_mps),
+        name: format!(
+            "adults{} at {:.2} m/s, Fukuchi 2018 (mean ±1 SD)",
+            if d.on_level_ground() { "" } else { " on level ground" },
+            reference.speed_mps
+        ),
         polygon: lower.chain(upper.into_iter().rev()).collect(),
     };
     let rights: Vec<_> = own.step_plans.iter().filter(|p| p.side == Side::Right).collect();

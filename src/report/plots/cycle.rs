@@ -125,6 +125,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
     let areas = root.split_evenly((2, 3));
     let cycles: Vec<Vec<Cycle>> = walks.iter().map(|(_, d)| pelvis_cycles(d)).collect();
     let reference = speed_matched(&walks[0].1);
+    let level = walks[0].1.on_level_ground();
     // Signs, checked before drawing: the walk's obliquity is + with the right hip up and its
     // rotation + with the right hip forward (`PelvisPose::new`, its test
     // `obliquity_lifts_the_right_hip`); the reference's are the right side's pelvis angles
@@ -145,7 +146,8 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         Some(range_band(mean_of(&cycles[0][3]), people.vertical_range_cm.0)),
     ];
     let range_name = format!(
-        "adults' range, {:.1} cm at {}\ncentred on the walk's mean (WBDS)",
+        "adults' range{}, {:.1} cm at {}\ncentred on the walk's mean (WBDS)",
+        if level { "" } else { " on level ground" },
         people.vertical_range_cm.0,
         measured_at(&people)
     );
@@ -160,7 +162,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
                 (name, PALETTE[k % PALETTE.len()], &cycles[k][p])
             })
             .collect();
-        let band_name = if p == 3 { range_name.clone() } else { norm_name(&reference, p == 0) };
+        let band_name = if p == 3 { range_name.clone() } else { norm_name(&reference, p == 0, level) };
         if let Some(norm) = norms.get(p).and_then(Option::as_ref) {
             lines.insert(0, (band_name.as_str(), NORM, norm));
         }
@@ -173,10 +175,12 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
 const NORM: RGBColor = RGBColor(120, 120, 120);
 
 /// The normative band's legend entry: whose, at what speed; for the pelvic tilt, that the band
-/// is the reference's shape, not its level.
-fn norm_name(reference: &Reference, tilt: bool) -> String {
+/// is the reference's shape, not its level; for a walk off level ground, that the adults walked
+/// on level ground (a stairs walk's knee against a level band read as a 40° error).
+fn norm_name(reference: &Reference, tilt: bool, level: bool) -> String {
     let shape = if tilt { "\nshape about the walk's mean" } else { "" };
-    format!("adults at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}", reference.speed_mps)
+    let ground = if level { "" } else { " on level ground" };
+    format!("adults{ground} at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}", reference.speed_mps)
 }
 
 /// The built-in references at the speed `walk` walked its drawn cycles at, as the summary's
@@ -229,7 +233,7 @@ pub(super) fn joints<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         ("ankle", "ankle_dorsi", "dorsiflexion + (deg)", |l| l.ankle_dorsi_deg),
     ];
     let reference = speed_matched(&walks[0].1);
-    let band_name = norm_name(&reference, false);
+    let band_name = norm_name(&reference, false, walks[0].1.on_level_ground());
     for (area, (name, stem, unit, pick)) in areas.iter().zip(joints) {
         let mut cycles = Vec::new();
         for (k, (walk, d)) in walks.iter().enumerate() {

@@ -64,6 +64,11 @@ impl<'a> Data<'a> {
 
     /// The walk's speed over the cycles drawn (m/s), right heel strike to right heel strike as
     /// the summary measures it; the config's speed for a walk with fewer than two strikes.
+    /// The walk is on level ground, as the normative adults walked: off it, the bands say so.
+    pub(crate) fn on_level_ground(&self) -> bool {
+        matches!(self.run.terrain.kind(), crate::model::terrain::TerrainKind::Flat)
+    }
+
     pub(crate) fn speed_mps(&self) -> f64 {
         let f = &self.run.frames;
         match (self.strikes[0].first(), self.strikes[0].last()) {
