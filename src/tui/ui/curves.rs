@@ -399,9 +399,10 @@ fn joints_title(traced: bool, [t0, t1]: [f64; 2], width: u16) -> String {
 }
 
 /// What the band is, said beside the hip trace's name as fully as the row allows: the
-/// right leg's cycle, the norms at `norms_mps`, and whether the walk (at `walk_mps`) is
-/// beyond the norms' fastest or slowest block, which the band then stays at.
-fn band_note(norms_mps: f64, walk_mps: f64, room: usize) -> Option<String> {
+/// right leg's cycle, the norms at `norms_mps`, whether the walk (at `walk_mps`) is beyond the
+/// norms' fastest or slowest block, which the band then stays at, and, for a walk off level
+/// ground (`level` false), that the adults walked on level ground.
+fn band_note(norms_mps: f64, walk_mps: f64, level: bool, room: usize) -> Option<String> {
     let beyond = if walk_mps > norms_mps + 1e-6 {
         (" (their fastest)", " max")
     } else if walk_mps < norms_mps - 1e-6 {
@@ -409,9 +410,10 @@ fn band_note(norms_mps: f64, walk_mps: f64, room: usize) -> Option<String> {
     } else {
         ("", "")
     };
+    let (ground, short) = if level { ("", "") } else { (" on level ground", "level ") };
     [
-        format!("band: right leg, adults at {norms_mps:.2} m/s{}", beyond.0),
-        format!("adults {norms_mps:.2} m/s{}", beyond.1),
+        format!("band: right leg, adults{ground} at {norms_mps:.2} m/s{}", beyond.0),
+        format!("{short}adults {norms_mps:.2} m/s{}", beyond.1),
     ]
     .into_iter()
     .find(|n| n.chars().count() <= room)
@@ -454,7 +456,8 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
             });
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1).chain(band.iter().flat_map(|b| [b.1, b.2])));
         let room = usize::from(inner.width).saturating_sub(name.chars().count() + 2);
-        let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, app.walk_speed_mps(), room));
+        let level = app.params.terrain.kind == crate::model::params::TerrainChoice::Flat;
+        let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, app.walk_speed_mps(), level, room));
         traces.push((name, note, right, left, band, y));
     }
     // One gutter for the three, so that they share a time axis: sized each to its own labels,
@@ -585,11 +588,17 @@ mod tests {
 
     #[test]
     fn the_band_note_names_the_speed_as_fully_as_the_room_allows() {
-        assert_eq!(band_note(1.2449, 1.2449, 60).unwrap(), "band: right leg, adults at 1.24 m/s");
-        assert_eq!(band_note(1.2449, 1.2449, 20).unwrap(), "adults 1.24 m/s");
-        assert_eq!(band_note(1.2449, 1.2449, 14), None);
+        assert_eq!(band_note(1.2449, 1.2449, true, 60).unwrap(), "band: right leg, adults at 1.24 m/s");
+        assert_eq!(band_note(1.2449, 1.2449, true, 20).unwrap(), "adults 1.24 m/s");
+        assert_eq!(band_note(1.2449, 1.2449, true, 14), None);
         // A walk beyond the norms' ends: the band stays at the end block, and says so.
-        assert_eq!(band_note(1.799, 2.0, 60).unwrap(), "band: right leg, adults at 1.80 m/s (their fastest)");
-        assert_eq!(band_note(0.796, 0.5, 20).unwrap(), "adults 0.80 m/s min");
+        assert_eq!(band_note(1.799, 2.0, true, 60).unwrap(), "band: right leg, adults at 1.80 m/s (their fastest)");
+        assert_eq!(band_note(0.796, 0.5, true, 20).unwrap(), "adults 0.80 m/s min");
+        // Off level ground (stairs, a slope, rough ground) the adults still walked on the level.
+        assert_eq!(
+            band_note(0.796, 0.5, false, 80).unwrap(),
+            "band: right leg, adults on level ground at 0.80 m/s (their slowest)"
+        );
+        assert_eq!(band_note(0.796, 0.5, false, 26).unwrap(), "level adults 0.80 m/s min");
     }
 }
