@@ -6,6 +6,7 @@
 
 use gaitlab::analysis::steady::{self, Part, PartKind};
 use gaitlab::analysis::{self, Run};
+use gaitlab::model::params::TerrainChoice;
 use gaitlab::model::walk::leg::LegPhase;
 use gaitlab::model::walk::pace::{PaceEventKind, WalkState};
 use gaitlab::report::metrics;
@@ -220,6 +221,36 @@ fn a_walk_without_a_schedule_is_one_steady_part_and_its_snapshots_keep_their_byt
         let snapshot = gaitlab::snapshot::measure::measure(&path, &params).unwrap();
         let stored = std::fs::read_to_string(path.with_extension("snap.json")).unwrap();
         assert_eq!(gaitlab::snapshot::format::render(&snapshot), stored, "{}", path.display());
-        assert_eq!(snapshot.steady_part.is_some(), !params.schedule.is_empty(), "{}", path.display());
+        // A schedule's plateau, or the cycles on stairs or a slope: a part of the walk, named.
+        let feature = matches!(params.terrain.kind, TerrainChoice::Stairs | TerrainChoice::Slope);
+        assert_eq!(snapshot.steady_part.is_some(), !params.schedule.is_empty() || feature, "{}", path.display());
     }
+}
+
+/// On stairs the figures are the stair cycles': configs/stairs_up.toml's right heel strikes at
+/// 4.08 / 5.45 / 6.80 / 8.17 s land on treads 0.15 / 0.45 / 0.75 / 1.05 m up, the level
+/// approach and landing (0 and 1.2 m) left out; each measured cycle climbs two rises, and the
+/// report, compare and the snapshot name the part.
+#[test]
+fn a_stairs_walk_is_measured_on_its_stair_cycles() {
+    let path = Path::new("configs/stairs_up.toml");
+    let params = gaitlab::config::load(path, &[]).unwrap();
+    let run = analysis::run(&params, f64::from(params.sim.cycles), params.sim.fps).unwrap();
+    let window = metrics::steady_window(&run).unwrap();
+    let part = window.terrain.expect("the stair cycles");
+    assert_eq!((part.cycles, part.on), (3, "on the stairs"));
+    let heights: Vec<f64> = window.strikes.iter().map(|&s| run.frames[s].legs[0].heel.y).collect();
+    for pair in heights.windows(2) {
+        assert!((pair[1] - pair[0] - 0.30).abs() < 1e-6, "each cycle climbs two 15 cm rises: {heights:?}");
+    }
+    let parts = steady::parts(&run);
+    let all = &parts.iter().find(|p| p.kind == PartKind::Plateau).unwrap().strikes;
+    assert!(all.len() > window.strikes.len() + 4, "level cycles before and after are left out: {all:?}");
+    let snapshot = gaitlab::snapshot::measure::measure(path, &params).unwrap();
+    assert_eq!(snapshot.steady_part.as_deref(), Some(part.describe().as_str()));
+    assert!(part.describe().contains("3 cycles on the stairs (level walking left out)"), "{}", part.describe());
+    // Level ground: every cycle after start-up, no part.
+    let level = gaitlab::config::load(Path::new("configs/default.toml"), &[]).unwrap();
+    let run = analysis::run(&level, 8.0, level.sim.fps).unwrap();
+    assert_eq!(metrics::steady_window(&run).unwrap().terrain, None);
 }

@@ -248,3 +248,56 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     }
     labels
 }
+/// Of the right heel strikes `strikes` (in order), the longest run of whole cycles walked on
+/// the walk's stairs or slope, as (first, last) indices into `strikes` and the feature's name:
+/// each cycle's heel ends at least one and a half rises higher (lower going down) than it
+/// started, or on a slope at least three quarters as far up (down) as the grade takes its
+/// stride. `None` on level or rough ground, or where no whole cycle is on the feature. A
+/// stairs walk's level approach and landing averaged in had its mean cycle mix three kinds of
+/// step (configs/stairs_up.toml: 3 cycles on the stairs, 2 onto and off them, 4 level).
+#[must_use]
+pub fn on_terrain_feature(run: &Run, strikes: &[usize]) -> Option<(usize, usize, &'static str)> {
+    use crate::model::terrain::TerrainKind;
+    let heel = |k: usize| run.frames[strikes[k]].legs[0].heel;
+    let on = |k: usize| {
+        let (dx, dy) = (heel(k + 1).x - heel(k).x, heel(k + 1).y - heel(k).y);
+        match *run.terrain.kind() {
+            TerrainKind::Stairs { rise_m, up, .. } => {
+                if up {
+                    dy >= 1.5 * rise_m
+                } else {
+                    dy <= -1.5 * rise_m
+                }
+            }
+            TerrainKind::Slope { grade_pct, .. } if grade_pct != 0.0 => {
+                let expected = grade_pct / 100.0 * dx;
+                dy * expected.signum() >= 0.75 * expected.abs()
+            }
+            _ => false,
+        }
+    };
+    let name = match run.terrain.kind() {
+        TerrainKind::Stairs { .. } => "on the stairs",
+        _ => "on the slope",
+    };
+    let (mut best, mut from) = (None::<(usize, usize)>, None);
+    for k in 0..strikes.len().saturating_sub(1) {
+        match (on(k), from) {
+            (true, None) => from = Some(k),
+            (false, Some(a)) => {
+                from = None;
+                if best.is_none_or(|(b0, b1)| k - a > b1 - b0) {
+                    best = Some((a, k));
+                }
+            }
+            _ => {}
+        }
+    }
+    if let Some(a) = from {
+        let k = strikes.len() - 1;
+        if best.is_none_or(|(b0, b1)| k - a > b1 - b0) {
+            best = Some((a, k));
+        }
+    }
+    best.map(|(a, b)| (a, b, name))
+}

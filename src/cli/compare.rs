@@ -67,10 +67,13 @@ fn write_table(out: &mut dyn Write, path: &Path, source: &str, c: &Comparison) -
         writeln!(out, "# {}", normative::OFF_LEVEL_NOTE)?;
     }
     if let Some(part) = &c.steady_part {
-        writeln!(
-            out,
-            "# steady part compared: {part} (the pace changed: the plateau with the most whole gait cycles; speed changes, stopping and standing left out)"
-        )?;
+        // A part on stairs or a slope says why itself; a pace plateau's reason is said here.
+        let why = if part.contains("plateau") {
+            " (the pace changed: the plateau with the most whole gait cycles; speed changes, stopping and standing left out)"
+        } else {
+            ""
+        };
+        writeln!(out, "# steady part compared: {part}{why}")?;
     }
     write_figures(out, c)?;
     writeln!(

@@ -87,11 +87,15 @@ pub(super) fn section(md: &mut String, name: &str, compared: bool, c: &Compariso
 }
 
 /// What the table is of, beyond the walk's name: the steady part compared (a walk whose pace
-/// changed), and that compared walks are not in it.
+/// changed, or the cycles on its stairs or slope), and that compared walks are not in it.
 fn compared_note(name: &str, compared: bool, c: &Comparison) -> String {
     let mut note = String::new();
     if let Some(part) = &c.steady_part {
-        let _ = write!(note, " The walk's pace changed: compared on its steady part, {part} (see *Pace*).");
+        if part.contains("plateau") {
+            let _ = write!(note, " The walk's pace changed: compared on its steady part, {part} (see *Pace*).");
+        } else {
+            let _ = write!(note, " Compared on {part}.");
+        }
     }
     if !c.level_ground {
         let mut off_level = normative::OFF_LEVEL_NOTE.to_string();

@@ -154,6 +154,56 @@ pub struct SteadyWindow {
     /// The plateau measured, for a walk that was not steady throughout (a pace schedule
     /// changed its speed or stopped it); `None`: every cycle after start-up.
     pub plateau: Option<SteadyPlateau>,
+    /// The cycles on the walk's stairs or slope, where it has whole ones there
+    /// ([`analysis::steady::on_terrain_feature`]): the level walking before and after is left
+    /// out; `None` on level or rough ground.
+    pub terrain: Option<TerrainPart>,
+}
+
+impl SteadyWindow {
+    /// The window is a part of the walk (a plateau, or the cycles on the stairs or slope), not
+    /// every cycle after start-up.
+    #[must_use]
+    pub fn is_part(&self) -> bool {
+        self.plateau.is_some() || self.terrain.is_some()
+    }
+
+    /// The part measured, as the outputs name it; `None` for every cycle after start-up.
+    #[must_use]
+    pub fn describe(&self) -> Option<String> {
+        match (self.plateau, self.terrain) {
+            (Some(p), None) => Some(p.describe()),
+            (None, Some(t)) => Some(t.describe()),
+            (Some(p), Some(t)) => Some(format!("{}, of {}", t.describe(), p.describe())),
+            (None, None) => None,
+        }
+    }
+}
+
+/// The cycles of a walk on its stairs or slope.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TerrainPart {
+    /// Its first measured heel strike (s).
+    pub from_s: f64,
+    /// Its last measured heel strike (s).
+    pub to_s: f64,
+    /// Whole gait cycles measured.
+    pub cycles: usize,
+    /// Where: "on the stairs", "on the slope".
+    pub on: &'static str,
+}
+
+impl TerrainPart {
+    /// As the outputs name it: "4.08–8.17 s, 3 cycles on the stairs (level walking left
+    /// out)".
+    #[must_use]
+    pub fn describe(&self) -> String {
+        let plural = if self.cycles == 1 { "" } else { "s" };
+        format!(
+            "{:.2}–{:.2} s, {} cycle{plural} {} (level walking left out)",
+            self.from_s, self.to_s, self.cycles, self.on
+        )
+    }
 }
 
 /// The plateau a walk's steady-state figures were measured on ([`analysis::steady`]).
@@ -195,14 +245,23 @@ pub fn steady_window(run: &Run) -> Result<SteadyWindow, TooShort> {
     if strikes.len() < 2 {
         return Err(too_short(run, &parts));
     }
-    let (first, last) = (strikes[0], strikes[strikes.len() - 1]);
     let described = SteadyPlateau {
         asked_mps: plateau.asked_mps,
-        from_s: run.frames[first].time_s,
-        to_s: run.frames[last].time_s,
+        from_s: run.frames[strikes[0]].time_s,
+        to_s: run.frames[strikes[strikes.len() - 1]].time_s,
         cycles: strikes.len() - 1,
     };
-    Ok(SteadyWindow { first, last, strikes: strikes.to_vec(), plateau: (!throughout).then_some(described) })
+    let feature = analysis::steady::on_terrain_feature(run, strikes);
+    let (strikes, terrain) = match feature {
+        Some((a, b, on)) => {
+            let part = &strikes[a..=b];
+            let t = |k: usize| run.frames[part[k]].time_s;
+            (part, Some(TerrainPart { from_s: t(0), to_s: t(part.len() - 1), cycles: part.len() - 1, on }))
+        }
+        None => (strikes, None),
+    };
+    let (first, last) = (strikes[0], strikes[strikes.len() - 1]);
+    Ok(SteadyWindow { first, last, strikes: strikes.to_vec(), plateau: (!throughout).then_some(described), terrain })
 }
 
 fn too_short(run: &Run, parts: &[analysis::steady::Part]) -> TooShort {
@@ -253,10 +312,8 @@ pub fn summarise_window(run: &Run, window: &SteadyWindow) -> Summary {
             .fold(0.0, f64::max)
     };
     let (min_toe, max_heel) = swing_clearances(steady);
-    let (stride, width) = match window.plateau {
-        None => footfall_spacing(run, frames[last].pelvis.x),
-        Some(_) => strike_spacing(frames, window),
-    };
+    let (stride, width) =
+        if window.is_part() { strike_spacing(frames, window) } else { footfall_spacing(run, frames[last].pelvis.x) };
     let checks = analysis::checks(frames);
     // Steps decided inside the steady window: each plan is made at a toe-off, in order (a
     // walk whose pace changed has no one cycle duration to turn a plan's phase into time).

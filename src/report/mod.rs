@@ -91,6 +91,7 @@ pub fn write_report(
     let ik_targets = &run.ik_targets;
     let window = metrics::steady_window(&run)?;
     let steady = window.plateau;
+    let terrain_part = window.terrain;
     let summary = metrics::summarise_window(&run, &window);
     let normative = against::compare(&input.name, input.cycles, &run, &summary)?;
     let mut others = Vec::new();
@@ -148,7 +149,8 @@ pub fn write_report(
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
         let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
-        let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip, steady.as_ref());
+        let parts = (steady.as_ref(), terrain_part.as_ref());
+        let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip, parts);
         pace::section(&mut md, &run);
         write("summary.md", &md)?;
         Ok(())
@@ -272,11 +274,20 @@ fn summary_md(
     normative: &crate::normative::Comparison,
     ik: &IkRows<'_>,
     clip: &plots::animation::Clip,
-    steady: Option<&metrics::SteadyPlateau>,
+    (steady, terrain): (Option<&metrics::SteadyPlateau>, Option<&metrics::TerrainPart>),
 ) -> String {
     let mut md = summary_intro(input, others);
     if let Some(plateau) = steady {
         pace::headline(&mut md, plateau);
+    }
+    if let Some(part) = terrain {
+        let _ = writeln!(
+            md,
+            "Measured on the terrain: {}. The figures below (and *Against measured gait*) are measured on the \
+             whole gait cycles walked there only; the health checks (foot skate, penetration, reach failures, \
+             non-finite values) cover every frame.\n",
+            part.describe()
+        );
     }
     figures_table(&mut md, input, s, others);
     against::section(&mut md, &input.name, !others.is_empty(), normative);

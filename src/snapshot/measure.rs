@@ -98,7 +98,7 @@ pub fn recorded(path: &Path, cycles: u32, run: &Run, summary: &Summary) -> Resul
             .zip(curves)
             .map(|(name, points)| ((*name).to_string(), points.iter().map(|&x| Kind::Angle.round(x)).collect()))
             .collect(),
-        steady_part: window.plateau.map(|p| p.describe()),
+        steady_part: window.describe(),
     })
 }
 

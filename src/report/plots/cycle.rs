@@ -146,10 +146,10 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         Some(range_band(mean_of(&cycles[0][3]), people.vertical_range_cm.0)),
     ];
     let range_name = format!(
-        "adults' range{}, {:.1} cm at {}\ncentred on the walk's mean (WBDS)",
-        if level { "" } else { " on level ground" },
+        "adults' range, {:.1} cm at {}\ncentred on the walk's mean (WBDS){}",
         people.vertical_range_cm.0,
-        measured_at(&people)
+        measured_at(&people),
+        if level { "" } else { "\nwalking on level ground" }
     );
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
         let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
@@ -179,8 +179,9 @@ const NORM: RGBColor = RGBColor(120, 120, 120);
 /// on level ground (a stairs walk's knee against a level band read as a 40° error).
 fn norm_name(reference: &Reference, tilt: bool, level: bool) -> String {
     let shape = if tilt { "\nshape about the walk's mean" } else { "" };
-    let ground = if level { "" } else { " on level ground" };
-    format!("adults{ground} at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}", reference.speed_mps)
+    // Its own line: a longer first line pushed the legend's text over its swatches.
+    let ground = if level { "" } else { "\nwalking on level ground" };
+    format!("adults at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}{ground}", reference.speed_mps)
 }
 
 /// The built-in references at the speed `walk` walked its drawn cycles at, as the summary's

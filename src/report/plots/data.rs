@@ -4,7 +4,7 @@
 use crate::analysis::Run;
 use crate::analysis::events as gait_events;
 use crate::model::walk::frame::Frame;
-use crate::report::metrics::{self, SteadyWindow};
+use crate::report::metrics;
 
 /// A quantity over the gait cycle: mean, min and max at each percent.
 pub(crate) struct Cycle {
@@ -25,14 +25,12 @@ pub(crate) struct Data<'a> {
 }
 
 /// Steady heel strikes of `side`: the start-up cycle's first strike dropped; for a walk
-/// whose pace changed, those on the plateau its figures are measured on
+/// whose pace changed, or on stairs or a slope, those on the part its figures are measured on
 /// ([`metrics::steady_window`]), so that the cycle plots draw what the figures measure.
 fn strikes_of(run: &Run, side: usize) -> Vec<usize> {
     let all = gait_events::heel_strikes(&run.frames, side);
     match metrics::steady_window(run) {
-        Ok(SteadyWindow { plateau: Some(_), first, last, .. }) => {
-            all.into_iter().filter(|s| (first..=last).contains(s)).collect()
-        }
+        Ok(w) if w.is_part() => all.into_iter().filter(|s| (w.first..=w.last).contains(s)).collect(),
         _ => all.into_iter().skip(1).collect(),
     }
 }
