@@ -252,5 +252,51 @@ fn a_stairs_walk_is_measured_on_its_stair_cycles() {
     // Level ground: every cycle after start-up, no part.
     let level = gaitlab::config::load(Path::new("configs/default.toml"), &[]).unwrap();
     let run = analysis::run(&level, 8.0, level.sim.fps).unwrap();
-    assert_eq!(metrics::steady_window(&run).unwrap().terrain, None);
+    let window = metrics::steady_window(&run).unwrap();
+    assert_eq!((window.terrain, window.terrain_missed, window.describe()), (None, None, None));
+    // Told by where the feet land, not by how far a cycle climbs: treads longer than a step
+    // (0.5 m) are still the stairs (5 cycles), and a flight too short for a whole cycle (two
+    // treads) leaves every cycle measured, said so.
+    let on_stairs = |sets: &[&str]| {
+        let sets: Vec<String> = sets.iter().map(|s| (*s).to_string()).collect();
+        let p = gaitlab::config::load(path, &sets).unwrap();
+        metrics::steady_window(&analysis::run(&p, f64::from(p.sim.cycles), p.sim.fps).unwrap()).unwrap()
+    };
+    assert_eq!(on_stairs(&["terrain.run_m=0.5"]).terrain.map(|t| t.cycles), Some(5));
+    let short = on_stairs(&["terrain.count=2"]);
+    assert_eq!((short.terrain, short.terrain_missed), (None, Some("on the stairs")));
+    let said = short.describe().unwrap();
+    assert!(said.contains("none lies whole on the stairs, so level cycles are averaged in"), "{said}");
+}
+
+/// A scheduled walk up stairs: the plateau holds level cycles too, and the figures, the speed
+/// plot's shading and the headline are all the stair cycles' (the plot had shaded the whole
+/// plateau, 4.00–17.60 s, while the figures were taken on its cycles on the stairs).
+#[test]
+fn a_scheduled_stairs_walk_shades_and_heads_its_stair_cycles() {
+    let dir = temp("stairs-schedule");
+    let config = dir.join("stairs_schedule.toml");
+    let stairs =
+        std::fs::read_to_string("configs/stairs_up.toml").unwrap().replace("start_x_m = 2.0", "start_x_m = 3.0");
+    let schedule =
+        "\n[[walk.schedule]]\ntime_s = 1.0\nspeed_mps = 0.55\n\n[[walk.schedule]]\ntime_s = 18.0\nstop = true\n";
+    std::fs::write(&config, format!("{stairs}{schedule}").replace("cycles = 10", "cycles = 14")).unwrap();
+    let params = gaitlab::config::load(&config, &[]).unwrap();
+    let run = analysis::run(&params, f64::from(params.sim.cycles), params.sim.fps).unwrap();
+    let window = metrics::steady_window(&run).unwrap();
+    let (plateau, part) = (window.plateau.expect("the pace changed"), window.terrain.expect("stairs in it"));
+    assert!(part.from_s > plateau.from_s && part.cycles < plateau.cycles, "{part:?} inside {plateau:?}");
+    let out = dir.join("report");
+    let o = gaitlab(&["report", config.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    let span = format!("{:.2}–{:.2} s", part.from_s, part.to_s);
+    assert!(md.contains(&format!("Steady part: {span}, the 0.55 m/s plateau, {} cycles", part.cycles)), "{md}");
+    assert!(md.contains(&format!("Measured on the terrain: {span}, {} cycles on the stairs", part.cycles)), "{md}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert!(json["steady_part"].as_str().unwrap().starts_with(&span), "{}", json["steady_part"]);
+    let svg = std::fs::read_to_string(out.join("plots/speed.svg")).unwrap();
+    assert!(svg.contains("summary figures measured here"), "the speed plot shades the measured cycles");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -248,37 +248,43 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     }
     labels
 }
+/// Where a walk on stairs or a slope is measured: "on the stairs", "on the slope"; `None` on
+/// level or rough ground (and on a slope of grade 0).
+#[must_use]
+pub fn terrain_feature(run: &Run) -> Option<&'static str> {
+    use crate::model::terrain::TerrainKind;
+    match *run.terrain.kind() {
+        TerrainKind::Stairs { .. } => Some("on the stairs"),
+        TerrainKind::Slope { grade_pct, .. } if grade_pct != 0.0 => Some("on the slope"),
+        _ => None,
+    }
+}
+
 /// Of the right heel strikes `strikes` (in order), the longest run of whole cycles walked on
 /// the walk's stairs or slope, as (first, last) indices into `strikes` and the feature's name:
-/// each cycle's heel ends at least one and a half rises higher (lower going down) than it
-/// started, or on a slope at least three quarters as far up (down) as the grade takes its
-/// stride. `None` on level or rough ground, or where no whole cycle is on the feature. A
-/// stairs walk's level approach and landing averaged in had its mean cycle mix three kinds of
-/// step (configs/stairs_up.toml: 3 cycles on the stairs, 2 onto and off them, 4 level).
+/// cycles whose heel strikes, both feet's, all land on the flight's treads (or on the slope),
+/// none on the level before or after it. `None` on level or rough ground, or where no whole
+/// cycle is on the feature. A stairs walk's level approach and landing averaged in had its mean
+/// cycle mix three kinds of step (configs/stairs_up.toml: 3 cycles on the stairs, 2 onto and off
+/// them, 4 level). Told by where the feet land, not by how far a cycle climbs, so that treads
+/// longer than a step or a flight too short for a cycle are read for what they are.
 #[must_use]
 pub fn on_terrain_feature(run: &Run, strikes: &[usize]) -> Option<(usize, usize, &'static str)> {
     use crate::model::terrain::TerrainKind;
-    let heel = |k: usize| run.frames[strikes[k]].legs[0].heel;
-    let on = |k: usize| {
-        let (dx, dy) = (heel(k + 1).x - heel(k).x, heel(k + 1).y - heel(k).y);
-        match *run.terrain.kind() {
-            TerrainKind::Stairs { rise_m, up, .. } => {
-                if up {
-                    dy >= 1.5 * rise_m
-                } else {
-                    dy <= -1.5 * rise_m
-                }
-            }
-            TerrainKind::Slope { grade_pct, .. } if grade_pct != 0.0 => {
-                let expected = grade_pct / 100.0 * dx;
-                dy * expected.signum() >= 0.75 * expected.abs()
-            }
-            _ => false,
+    let name = terrain_feature(run)?;
+    let on_feature: Box<dyn Fn(f64) -> bool> = match *run.terrain.kind() {
+        TerrainKind::Stairs { run_m, count, start_x_m, .. } => {
+            let end = start_x_m + f64::from(count) * run_m;
+            Box::new(move |x| (start_x_m..end).contains(&x))
         }
+        TerrainKind::Slope { start_x_m, .. } => Box::new(move |x| x >= start_x_m),
+        _ => return None,
     };
-    let name = match run.terrain.kind() {
-        TerrainKind::Stairs { .. } => "on the stairs",
-        _ => "on the slope",
+    let left = events::heel_strikes(&run.frames, 1);
+    let lands_on = |frame: usize, side: usize| on_feature(run.frames[frame].legs[side].heel.x);
+    let on = |k: usize| {
+        let (from, to) = (strikes[k], strikes[k + 1]);
+        lands_on(from, 0) && lands_on(to, 0) && left.iter().filter(|&&s| s > from && s < to).all(|&s| lands_on(s, 1))
     };
     let (mut best, mut from) = (None::<(usize, usize)>, None);
     for k in 0..strikes.len().saturating_sub(1) {

@@ -38,16 +38,22 @@ fn write_figures(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         n.stride_length_m.1
     )?;
     let p = &c.pelvis_norms;
+    // Off level ground the walk's range is mostly the climb's profile: no score against people
+    // walking on the level (stairs_down read +35 SD).
+    let score = if c.level_ground {
+        format!("walk {:+.2} SD", sd_units(c.pelvis_vertical_range_cm, p.vertical_range_cm))
+    } else {
+        "no SD score: they walked on level ground".to_string()
+    };
     writeln!(
         out,
-        "# pelvis vertical range: walk {:.2} cm; people at {:.3} m/s ({}; {}): {:.2} +- {:.2} cm (walk {:+.2} SD)",
+        "# pelvis vertical range: walk {:.2} cm; people at {:.3} m/s ({}; {}): {:.2} +- {:.2} cm ({score})",
         c.pelvis_vertical_range_cm,
         p.speed_mps,
         normative::PELVIS_NORMS_SOURCE,
         p.blocks_used(),
         p.vertical_range_cm.0,
         p.vertical_range_cm.1,
-        sd_units(c.pelvis_vertical_range_cm, p.vertical_range_cm)
     )?;
     if let Some(sentence) = normative::through_legs_sentence(c) {
         writeln!(out, "# {sentence}")?;

@@ -27,6 +27,11 @@ pub(super) struct SummaryJson<'a> {
     normative_hip_r: f64,
     normative_knee_r: f64,
     normative_ankle_r: f64,
+    /// The part of the walk the figures are measured on, where it is not every cycle after
+    /// start-up (a schedule's plateau, the cycles on stairs or a slope): as compare and the
+    /// snapshot name it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    steady_part: Option<String>,
 }
 
 impl<'a> SummaryJson<'a> {
@@ -42,6 +47,7 @@ impl<'a> SummaryJson<'a> {
             normative_hip_r: r("hip_flex"),
             normative_knee_r: r("knee_flex"),
             normative_ankle_r: r("ankle_dorsi"),
+            steady_part: c.steady_part.clone(),
         }
     }
 }
@@ -131,8 +137,8 @@ fn spatiotemporal(md: &mut String, c: &Comparison) {
     let p = &c.pelvis_norms;
     let (mean, sd) = p.vertical_range_cm;
     let walk = c.pelvis_vertical_range_cm;
-    let _ =
-        writeln!(md, "| pelvis vertical range (cm)¹ | {walk:.2} | {mean:.2} ± {sd:.2} | {:+.2} |", (walk - mean) / sd);
+    let score = if c.level_ground { format!("{:+.2}", (walk - mean) / sd) } else { "off level ground".to_string() };
+    let _ = writeln!(md, "| pelvis vertical range (cm)¹ | {walk:.2} | {mean:.2} ± {sd:.2} | {score} |");
     let _ = writeln!(
         md,
         "\n¹ Against {} ({}): the centre of the four pelvis markers, per step.",

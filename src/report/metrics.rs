@@ -158,6 +158,10 @@ pub struct SteadyWindow {
     /// ([`analysis::steady::on_terrain_feature`]): the level walking before and after is left
     /// out; `None` on level or rough ground.
     pub terrain: Option<TerrainPart>,
+    /// Where a walk on stairs or a slope would have been measured when no whole cycle lies
+    /// there (a flight of one or two treads, a short walk): every cycle is, and the outputs say
+    /// so.
+    pub terrain_missed: Option<&'static str>,
 }
 
 impl SteadyWindow {
@@ -168,14 +172,17 @@ impl SteadyWindow {
         self.plateau.is_some() || self.terrain.is_some()
     }
 
-    /// The part measured, as the outputs name it; `None` for every cycle after start-up.
+    /// The part measured, as the outputs name it; `None` for every cycle after start-up on level
+    /// ground (on stairs or a slope with no whole cycle there, a sentence saying so).
     #[must_use]
     pub fn describe(&self) -> Option<String> {
         match (self.plateau, self.terrain) {
             (Some(p), None) => Some(p.describe()),
             (None, Some(t)) => Some(t.describe()),
             (Some(p), Some(t)) => Some(format!("{}, of {}", t.describe(), p.describe())),
-            (None, None) => None,
+            (None, None) => self
+                .terrain_missed
+                .map(|on| format!("every cycle after start-up: none lies whole {on}, so level cycles are averaged in")),
         }
     }
 }
@@ -191,6 +198,8 @@ pub struct TerrainPart {
     pub cycles: usize,
     /// Where: "on the stairs", "on the slope".
     pub on: &'static str,
+    /// Cycles walked on the level before or after were left out.
+    pub left_out: bool,
 }
 
 impl TerrainPart {
@@ -199,10 +208,8 @@ impl TerrainPart {
     #[must_use]
     pub fn describe(&self) -> String {
         let plural = if self.cycles == 1 { "" } else { "s" };
-        format!(
-            "{:.2}–{:.2} s, {} cycle{plural} {} (level walking left out)",
-            self.from_s, self.to_s, self.cycles, self.on
-        )
+        let left_out = if self.left_out { " (level walking left out)" } else { "" };
+        format!("{:.2}–{:.2} s, {} cycle{plural} {}{left_out}", self.from_s, self.to_s, self.cycles, self.on)
     }
 }
 
@@ -252,16 +259,20 @@ pub fn steady_window(run: &Run) -> Result<SteadyWindow, TooShort> {
         cycles: strikes.len() - 1,
     };
     let feature = analysis::steady::on_terrain_feature(run, strikes);
-    let (strikes, terrain) = match feature {
+    let (part, terrain) = match feature {
         Some((a, b, on)) => {
             let part = &strikes[a..=b];
             let t = |k: usize| run.frames[part[k]].time_s;
-            (part, Some(TerrainPart { from_s: t(0), to_s: t(part.len() - 1), cycles: part.len() - 1, on }))
+            let left_out = part.len() < strikes.len();
+            let cycles = part.len() - 1;
+            (part, Some(TerrainPart { from_s: t(0), to_s: t(part.len() - 1), cycles, on, left_out }))
         }
         None => (strikes, None),
     };
-    let (first, last) = (strikes[0], strikes[strikes.len() - 1]);
-    Ok(SteadyWindow { first, last, strikes: strikes.to_vec(), plateau: (!throughout).then_some(described), terrain })
+    let terrain_missed = if terrain.is_none() { analysis::steady::terrain_feature(run) } else { None };
+    let (first, last) = (part[0], part[part.len() - 1]);
+    let plateau = (!throughout).then_some(described);
+    Ok(SteadyWindow { first, last, strikes: part.to_vec(), plateau, terrain, terrain_missed })
 }
 
 fn too_short(run: &Run, parts: &[analysis::steady::Part]) -> TooShort {

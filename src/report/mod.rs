@@ -90,8 +90,7 @@ pub fn write_report(
     let run = analysis::record(input.params, f64::from(input.cycles), input.fps, Keep::ALL)?;
     let ik_targets = &run.ik_targets;
     let window = metrics::steady_window(&run)?;
-    let steady = window.plateau;
-    let terrain_part = window.terrain;
+    let (steady, terrain_line) = measured_part(&window);
     let summary = metrics::summarise_window(&run, &window);
     let normative = against::compare(&input.name, input.cycles, &run, &summary)?;
     let mut others = Vec::new();
@@ -149,7 +148,7 @@ pub fn write_report(
             ik_runs.iter().map(|run| (run.solver, run.summary(ik_targets))).collect();
         let ik_sides: Vec<SolverSides> = ik_runs.iter().map(|run| (run.solver, side_tables(run, ik_targets))).collect();
         let ik = IkRows { summaries: &ik_summaries, sides: &ik_sides };
-        let parts = (steady.as_ref(), terrain_part.as_ref());
+        let parts = (steady.as_ref(), terrain_line.as_deref());
         let mut md = summary_md(input, &summary, &compared, &normative, &ik, &animation.clip, parts);
         pace::section(&mut md, &run);
         write("summary.md", &md)?;
@@ -267,6 +266,30 @@ fn config_text(input: &ReportInput<'_>) -> Result<String, String> {
 
 /// `summary.md`: the walk's figures (beside any compared walk's), the walk against measured
 /// gait, the IK solvers on its targets, and links to the plots and tables.
+/// What `summary.md` and the speed plot say was measured: the plateau (its span narrowed to
+/// the cycles on stairs or a slope when it has some: the speed plot and the headline show that
+/// span, not the whole plateau's), and the sentence on the terrain's part, if any.
+fn measured_part(window: &metrics::SteadyWindow) -> (Option<metrics::SteadyPlateau>, Option<String>) {
+    let steady = window.plateau.map(|p| match window.terrain {
+        Some(t) => metrics::SteadyPlateau { from_s: t.from_s, to_s: t.to_s, cycles: t.cycles, ..p },
+        None => p,
+    });
+    let terrain_line = match (window.terrain, window.terrain_missed) {
+        (Some(t), _) => Some(format!(
+            "Measured on the terrain: {}. The figures below (and *Against measured gait*) are measured on the \
+             whole gait cycles walked there only; the health checks (foot skate, penetration, reach failures, \
+             non-finite values) cover every frame.\n",
+            t.describe()
+        )),
+        (None, Some(on)) => Some(format!(
+            "None of the walk's whole gait cycles lies {on} (a short flight or walk): the figures below average \
+             the level cycles in with the others.\n"
+        )),
+        (None, None) => None,
+    };
+    (steady, terrain_line)
+}
+
 fn summary_md(
     input: &ReportInput<'_>,
     s: &Summary,
@@ -274,20 +297,14 @@ fn summary_md(
     normative: &crate::normative::Comparison,
     ik: &IkRows<'_>,
     clip: &plots::animation::Clip,
-    (steady, terrain): (Option<&metrics::SteadyPlateau>, Option<&metrics::TerrainPart>),
+    (steady, terrain): (Option<&metrics::SteadyPlateau>, Option<&str>),
 ) -> String {
     let mut md = summary_intro(input, others);
     if let Some(plateau) = steady {
         pace::headline(&mut md, plateau);
     }
-    if let Some(part) = terrain {
-        let _ = writeln!(
-            md,
-            "Measured on the terrain: {}. The figures below (and *Against measured gait*) are measured on the \
-             whole gait cycles walked there only; the health checks (foot skate, penetration, reach failures, \
-             non-finite values) cover every frame.\n",
-            part.describe()
-        );
+    if let Some(line) = terrain {
+        let _ = writeln!(md, "{line}");
     }
     figures_table(&mut md, input, s, others);
     against::section(&mut md, &input.name, !others.is_empty(), normative);

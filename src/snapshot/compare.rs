@@ -99,6 +99,19 @@ fn exceeds(old: f64, new: f64, allowed: f64) -> bool {
 #[must_use]
 pub fn compare(old: &Snapshot, new: &Snapshot, tolerances: &Tolerances) -> Vec<Moved> {
     let mut moved = Vec::new();
+    // Which cycles were measured (a schedule's plateau, the cycles on stairs or a slope): the
+    // figures after it mean something else when it moves, however little they change.
+    if old.steady_part != new.steady_part {
+        let say =
+            |part: &Option<String>| part.as_deref().map_or_else(|| "every cycle".to_string(), |p| format!("\"{p}\""));
+        moved.push(Moved {
+            metric: format!("steady part: {} (was {})", say(&new.steady_part), say(&old.steady_part)),
+            key: "steady_part".into(),
+            old: None,
+            new: None,
+            allowed: 0.0,
+        });
+    }
     let mut check = |metric: String, key: &str, old: Option<f64>, new: Option<f64>| {
         let allowed = tolerances.allowed(key, kind_of(key), old.or(new).unwrap_or(0.0));
         let drifted = match (old, new) {
@@ -159,5 +172,21 @@ mod tests {
         let names: Vec<&str> = moved.iter().map(|m| m.metric.as_str()).collect();
         assert_eq!(names, ["speed_mps", "knee_flex_r_deg at 2 %"]);
         assert!((moved[1].change() - 0.1).abs() < 1e-12 && moved[1].allowed == 0.05);
+    }
+
+    #[test]
+    fn a_different_part_measured_is_a_drift_even_with_the_same_figures() {
+        let t = Tolerances::default();
+        let stairs = |cycles: u32| Snapshot {
+            steady_part: Some(format!("4.08–8.17 s, {cycles} cycles on the stairs (level walking left out)")),
+            ..snapshot(0.5, 60.0)
+        };
+        assert!(compare(&stairs(3), &stairs(3), &t).is_empty());
+        let moved = compare(&stairs(2), &stairs(3), &t);
+        assert_eq!(moved.len(), 1);
+        assert_eq!(moved[0].key, "steady_part");
+        assert!(moved[0].metric.contains("3 cycles") && moved[0].metric.contains("(was \"4.08–8.17 s, 2 cycles"));
+        let level = compare(&snapshot(0.5, 60.0), &stairs(3), &t);
+        assert!(level[0].metric.ends_with("(was every cycle)"), "{}", level[0].metric);
     }
 }
