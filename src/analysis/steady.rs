@@ -248,6 +248,7 @@ fn frame_labels(run: &Run, right: &[usize], steps: &[usize]) -> Vec<(PartKind, f
     }
     labels
 }
+
 /// Where a walk on stairs or a slope is measured: "on the stairs", "on the slope"; `None` on
 /// level or rough ground (and on a slope of grade 0).
 #[must_use]
