@@ -299,7 +299,7 @@ fn summary_md(
     clip: &plots::animation::Clip,
     (steady, terrain): (Option<&metrics::SteadyPlateau>, Option<&str>),
 ) -> String {
-    let mut md = summary_intro(input, others);
+    let mut md = summary_intro(input, others, steady.is_some() || terrain.is_some());
     if let Some(plateau) = steady {
         pace::headline(&mut md, plateau);
     }
@@ -335,7 +335,7 @@ fn summary_md(
 
 /// The title and the paragraph that says what was walked: the preset's description, the
 /// terrain, the speed, how long, and which walks it is compared with.
-fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)]) -> String {
+fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)], part_named: bool) -> String {
     let p = input.params;
     // The preset's description is its author's words and may name another speed than the one
     // walked (`--set walk.speed_mps=0.8` on stroll's "at 0.9 m/s"): quoted as the preset's, and
@@ -352,12 +352,13 @@ fn summary_intro(input: &ReportInput<'_>, others: &[(&str, &Summary)]) -> String
     });
     format!(
         "# gaitlab report: {}\n\n{description}, walked at {} m/s (`walk.speed_mps`) on {terrain} terrain; {} cycles at {} fps \
-         (the first cycle is start-up and not measured). Config: [config.toml](config.toml).\n\n\
+         (the first cycle is start-up and not measured{}). Config: [config.toml](config.toml).\n\n\
          {}",
         input.name,
         toml_number(p.walk.speed_mps),
         input.cycles,
         input.fps,
+        if part_named { "; the part measured is named below" } else { "" },
         if others.is_empty() {
             String::new()
         } else {
