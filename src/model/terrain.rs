@@ -46,6 +46,18 @@ pub enum TerrainKind {
     },
 }
 
+impl TerrainKind {
+    /// Level ground throughout, as the normative adults walked: flat, or a slope of grade 0.
+    #[must_use]
+    pub fn is_level(&self) -> bool {
+        match self {
+            TerrainKind::Flat => true,
+            TerrainKind::Slope { grade_pct, .. } => *grade_pct == 0.0,
+            TerrainKind::Stairs { .. } | TerrainKind::Random { .. } => false,
+        }
+    }
+}
+
 /// A terrain profile, ready to be queried.
 #[derive(Clone, Debug)]
 pub struct Terrain {
@@ -321,5 +333,14 @@ mod tests {
         let x = t.settle_footfall(1.2, 0.26, 0.015);
         assert!(t.corners_between(x - 0.015 + 1e-9, x + 0.275 - 1e-9).is_empty(), "{x}");
         assert_eq!(t.settle_footfall(0.5, 0.26, 0.015), 0.5);
+    }
+
+    #[test]
+    fn only_flat_ground_and_a_level_slope_are_level() {
+        assert!(TerrainKind::Flat.is_level());
+        assert!(TerrainKind::Slope { grade_pct: 0.0, start_x_m: 2.0 }.is_level());
+        assert!(!TerrainKind::Slope { grade_pct: -0.5, start_x_m: 2.0 }.is_level());
+        let stairs = TerrainKind::Stairs { rise_m: 0.15, run_m: 0.34, count: 8, up: true, start_x_m: 2.0 };
+        assert!(!stairs.is_level());
     }
 }

@@ -29,8 +29,7 @@ pub use pelvis::{PELVIS_NORMS_SOURCE, PelvisAtSpeed, PelvisNorms};
 use crate::analysis::Run;
 use crate::error::{Error, Result};
 use crate::model::body::BodyDims;
-use crate::model::params::{TerrainChoice, WalkParams};
-use crate::model::terrain::TerrainKind;
+use crate::model::params::WalkParams;
 use crate::report::metrics::Summary;
 use crate::snapshot::measure;
 use std::path::Path;
@@ -379,7 +378,7 @@ fn range(v: &[f64]) -> f64 {
 pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Result<Comparison> {
     let walk = measure::measure(path, params)?;
     let mut c = compare_measured(&walk, reference);
-    c.level_ground = params.terrain.kind == TerrainChoice::Flat;
+    c.level_ground = params.terrain.kind().is_level();
     if c.level_ground {
         c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims));
     }
@@ -397,7 +396,7 @@ pub fn compare_recorded(
 ) -> Result<Comparison> {
     let walk = measure::recorded(path, cycles, run, summary)?;
     let mut c = compare_measured(&walk, reference);
-    c.level_ground = matches!(run.terrain.kind(), TerrainKind::Flat);
+    c.level_ground = run.terrain.kind().is_level();
     if c.level_ground {
         let dims = &run.gait.resolved().dims;
         c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), dims));

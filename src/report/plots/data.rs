@@ -64,7 +64,7 @@ impl<'a> Data<'a> {
     /// the summary measures it; the config's speed for a walk with fewer than two strikes.
     /// The walk is on level ground, as the normative adults walked: off it, the bands say so.
     pub(crate) fn on_level_ground(&self) -> bool {
-        matches!(self.run.terrain.kind(), crate::model::terrain::TerrainKind::Flat)
+        self.run.terrain.kind().is_level()
     }
 
     pub(crate) fn speed_mps(&self) -> f64 {

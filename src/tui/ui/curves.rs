@@ -456,7 +456,7 @@ pub fn draw_joints(f: &mut Frame, area: Rect, app: &App, marker: Marker) {
             });
         let y = bounds(right.iter().chain(left.iter()).map(|p| p.1).chain(band.iter().flat_map(|b| [b.1, b.2])));
         let room = usize::from(inner.width).saturating_sub(name.chars().count() + 2);
-        let level = app.params.terrain.kind == crate::model::params::TerrainChoice::Flat;
+        let level = app.params.terrain.kind().is_level();
         let note = reference.filter(|_| j == 0).and_then(|r| band_note(r.speed_mps, app.walk_speed_mps(), level, room));
         traces.push((name, note, right, left, band, y));
     }
