@@ -273,37 +273,31 @@ pub fn terrain_feature(run: &Run) -> Option<&'static str> {
 pub fn on_terrain_feature(run: &Run, strikes: &[usize]) -> Option<(usize, usize, &'static str)> {
     use crate::model::terrain::TerrainKind;
     let name = terrain_feature(run)?;
-    let on_feature: Box<dyn Fn(f64) -> bool> = match *run.terrain.kind() {
-        TerrainKind::Stairs { run_m, count, start_x_m, .. } => {
-            let end = start_x_m + f64::from(count) * run_m;
-            Box::new(move |x| (start_x_m..end).contains(&x))
-        }
-        TerrainKind::Slope { start_x_m, .. } => Box::new(move |x| x >= start_x_m),
+    // Where the feature lies along x: the flight's treads, or the slope onward.
+    let (from_x, to_x) = match *run.terrain.kind() {
+        TerrainKind::Stairs { run_m, count, start_x_m, .. } => (start_x_m, start_x_m + f64::from(count) * run_m),
+        TerrainKind::Slope { start_x_m, .. } => (start_x_m, f64::INFINITY),
         _ => return None,
     };
     let left = events::heel_strikes(&run.frames, 1);
-    let lands_on = |frame: usize, side: usize| on_feature(run.frames[frame].legs[side].heel.x);
+    let lands_on = |frame: usize, side: usize| (from_x..to_x).contains(&run.frames[frame].legs[side].heel.x);
     let on = |k: usize| {
         let (from, to) = (strikes[k], strikes[k + 1]);
         lands_on(from, 0) && lands_on(to, 0) && left.iter().filter(|&&s| s > from && s < to).all(|&s| lands_on(s, 1))
     };
-    let (mut best, mut from) = (None::<(usize, usize)>, None);
-    for k in 0..strikes.len().saturating_sub(1) {
-        match (on(k), from) {
-            (true, None) => from = Some(k),
+    // The longest run of cycles on it; one step past the last cycle closes an open run.
+    let cycles = strikes.len().saturating_sub(1);
+    let (mut best, mut start) = (None::<(usize, usize)>, None);
+    for k in 0..=cycles {
+        match (k < cycles && on(k), start) {
+            (true, None) => start = Some(k),
             (false, Some(a)) => {
-                from = None;
+                start = None;
                 if best.is_none_or(|(b0, b1)| k - a > b1 - b0) {
                     best = Some((a, k));
                 }
             }
             _ => {}
-        }
-    }
-    if let Some(a) = from {
-        let k = strikes.len() - 1;
-        if best.is_none_or(|(b0, b1)| k - a > b1 - b0) {
-            best = Some((a, k));
         }
     }
     best.map(|(a, b)| (a, b, name))

@@ -153,7 +153,7 @@ fn write_json(out: &mut dyn Write, c: &Comparison) -> io::Result<()> {
         line["pelvis_vertical_range_norm_sd_cm"] = p.vertical_range_cm.1.into();
         line["pelvis_norm_from_block_mps"] = p.from_block_mps.into();
         line["pelvis_norm_to_block_mps"] = p.to_block_mps.into();
-        if let Some((people, walk)) = c.pelvis_range_through_legs_cm.filter(|(a, b)| a.is_finite() && b.is_finite()) {
+        if let Some((people, walk)) = c.pelvis_range_through_legs_cm {
             line["pelvis_vertical_range_legs_norm_cm"] = people.into();
             line["pelvis_vertical_range_legs_walk_cm"] = walk.into();
         }

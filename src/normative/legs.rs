@@ -12,10 +12,11 @@
 //! lifting one hip over the other; the hips' ab/adduction and the turnout, which the norms do
 //! not give, are left out of both.
 
-use crate::model::body::{BALL_FRACTION, BodyDims, HEEL_FRACTION};
+use crate::model::body::BodyDims;
+use glam::DVec3;
 
-/// One gait cycle of clinical angles (deg), sampled evenly from the right heel strike; a
-/// last sample at 100 % (the next heel strike) may be included. Hip flexion and pelvic tilt as
+/// One gait cycle of clinical angles (deg), sampled evenly from a right heel strike to the
+/// next, both included (the norms' 0..=100 %, the snapshot's every 2 %). Hip flexion and pelvic tilt as
 /// gait labs measure them (both against the pelvis's anatomical frame, so that their
 /// difference is the thigh's angle from the vertical); obliquity positive with the right hip up.
 #[derive(Clone, Copy, Debug)]
@@ -54,33 +55,30 @@ pub fn pelvis_range_through_legs(angles: &LegAngles<'_>, dims: &BodyDims) -> f64
         let thigh = at(a.hip_flex) - at(a.pelvis_tilt);
         let shank = thigh - at(a.knee_flex);
         let pitch = shank + at(a.ankle_dorsi);
-        // The ankle's height over a point of the sole `ahead` of the ankle (m, + forward).
-        let over = |ahead: f64| dims.ankle_height * pitch.cos() - ahead * pitch.sin();
-        let ankle =
-            over(-HEEL_FRACTION * dims.foot_length).max(over((BALL_FRACTION - HEEL_FRACTION) * dims.foot_length));
+        // The ankle's height over a point of the sole (in the foot's frame) pitched toes-up by
+        // `pitch`: it stands on whichever of heel and ball is lower.
+        let over = |sole: DVec3| -(sole.x * pitch.sin() + sole.y * pitch.cos());
+        let ankle = over(dims.heel_local()).max(over(dims.ball_local()));
         dims.thigh * thigh.cos() + dims.shank * shank.cos() + ankle
     };
     let half_width = 0.5 * dims.hip_width;
-    let heights: Vec<f64> = (0..SAMPLES)
+    let (lowest, highest) = (0..SAMPLES)
         .map(|i| {
             let phase = i as f64 / SAMPLES as f64;
             let lift = half_width * sample(a.pelvis_obliquity, phase).to_radians().sin();
             if phase < 0.5 { hip_height(phase) - lift } else { hip_height(phase - 0.5) + lift }
         })
-        .collect();
-    let highest = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let lowest = heights.iter().copied().fold(f64::INFINITY, f64::min);
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| (lo.min(h), hi.max(h)));
     100.0 * (highest - lowest)
 }
 
-/// `curve` (evenly over the cycle, its last sample at 100 % when it has 51 or 101) at `phase`
-/// (0-1), linearly between samples.
+/// `curve` (evenly over the cycle, 0 and 100 % both sampled) at `phase` (0-1, wrapping),
+/// linearly between samples.
 fn sample(curve: &[f64], phase: f64) -> f64 {
-    let spans = if matches!(curve.len(), 51 | 101) { curve.len() - 1 } else { curve.len() };
+    let spans = curve.len() - 1;
     let x = phase.rem_euclid(1.0) * spans as f64;
     let i = (x.floor() as usize).min(spans - 1);
-    let next = curve[(i + 1) % curve.len()];
-    curve[i] + (next - curve[i]) * (x - i as f64)
+    curve[i] + (curve[i + 1] - curve[i]) * (x - i as f64)
 }
 
 #[cfg(test)]
@@ -127,7 +125,8 @@ mod tests {
         assert!((sample(&c, 0.5) - 25.0).abs() < 1e-12);
         assert!((sample(&c, 0.51) - 25.5).abs() < 1e-12);
         assert!((sample(&c, 1.25) - 12.5).abs() < 1e-12);
-        let no_end = [0.0, 1.0, 2.0, 3.0];
-        assert!((sample(&no_end, 0.875) - 1.5).abs() < 1e-12, "wraps to the first");
+        assert!(sample(&c, 1.0).abs() < 1e-12, "100 % is the next cycle's 0 %");
+        let three = [0.0, 10.0, 4.0];
+        assert!((sample(&three, 0.25) - 5.0).abs() < 1e-12 && (sample(&three, 0.75) - 7.0).abs() < 1e-12);
     }
 }

@@ -339,8 +339,8 @@ pub struct Comparison {
     pub pelvis_norms: PelvisAtSpeed,
     /// The pelvis vertical range (cm) that the reference's mean angles and the walk's own give
     /// through the walk's legs ([`pelvis_range_through_legs`]): what the joint curves alone
-    /// account for. `None` off level ground, where the chain does not stand, and where the
-    /// body is not known ([`compare_measured`]).
+    /// account for. `None` off level ground, where the chain does not stand, where the body is
+    /// not known ([`compare_measured`]) or a curve is missing (never NaN).
     pub pelvis_range_through_legs_cm: Option<(f64, f64)>,
     /// The walk was on level ground, as the norms' treadmill walking was; false on stairs,
     /// slopes and rough ground, where the differences include what the terrain asks.
@@ -380,7 +380,7 @@ pub fn compare(path: &Path, params: &WalkParams, reference: &References) -> Resu
     let mut c = compare_measured(&walk, reference);
     c.level_ground = params.terrain.kind().is_level();
     if c.level_ground {
-        c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims));
+        c.pelvis_range_through_legs_cm = through_legs(&walk, &reference.at(c.speed_mps), &params.resolve().dims);
     }
     Ok(c)
 }
@@ -399,7 +399,7 @@ pub fn compare_recorded(
     c.level_ground = run.terrain.kind().is_level();
     if c.level_ground {
         let dims = &run.gait.resolved().dims;
-        c.pelvis_range_through_legs_cm = Some(through_legs(&walk, &reference.at(c.speed_mps), dims));
+        c.pelvis_range_through_legs_cm = through_legs(&walk, &reference.at(c.speed_mps), dims);
     }
     Ok(c)
 }
@@ -409,16 +409,14 @@ pub fn compare_recorded(
 #[must_use]
 pub fn through_legs_sentence(c: &Comparison) -> Option<String> {
     let (people, walk) = c.pelvis_range_through_legs_cm?;
-    (people.is_finite() && walk.is_finite()).then(|| {
-        format!(
-            "the joint curves alone, put through this body's legs (sagittal chain, pelvic obliquity, rigid feet): the reference's mean angles would give the pelvis a vertical range of {people:.2} cm, the walk's own angles {walk:.2} cm; where the two are close, closer joint curves cannot raise the walk's pelvis"
-        )
-    })
+    Some(format!(
+        "the joint curves alone, put through this body's legs (sagittal chain, pelvic obliquity, rigid feet): the reference's mean angles would give the pelvis a vertical range of {people:.2} cm, the walk's own angles {walk:.2} cm; where the two are close, closer joint curves cannot raise the walk's pelvis"
+    ))
 }
 
 /// The pelvis range `reference`'s mean angles and `walk`'s own give through the legs of
-/// `dims` (level ground only: the chain stands on flat ground).
-fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims) -> (f64, f64) {
+/// `dims` (level ground only: the chain stands on flat ground); `None` where a curve is missing.
+fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims) -> Option<(f64, f64)> {
     let ours = |name: &str| walk.curves.iter().find(|(n, _)| n == name).map_or(&[][..], |c| c.1.as_slice());
     let theirs = |stem: &str| reference.curves.iter().find(|c| c.0 == stem).map_or(&[][..], |c| c.1.as_slice());
     let people = LegAngles {
@@ -435,7 +433,8 @@ fn through_legs(walk: &measure::Snapshot, reference: &Reference, dims: &BodyDims
         pelvis_tilt: ours("pelvis_tilt_deg"),
         pelvis_obliquity: ours("pelvis_obliquity_deg"),
     };
-    (pelvis_range_through_legs(&people, dims), pelvis_range_through_legs(&walked, dims))
+    let (people, walked) = (pelvis_range_through_legs(&people, dims), pelvis_range_through_legs(&walked, dims));
+    (people.is_finite() && walked.is_finite()).then_some((people, walked))
 }
 
 /// A walk already measured against `references` at the speed it walked (the fit measures

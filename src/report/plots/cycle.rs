@@ -149,7 +149,7 @@ pub(super) fn pelvis<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, walks: &[
         "adults' range, {:.1} cm at {}\ncentred on the walk's mean (WBDS){}",
         people.vertical_range_cm.0,
         measured_at(&people),
-        if level { "" } else { "\nwalking on level ground" }
+        ground_line(level)
     );
     for (p, (area, (title, unit))) in areas.iter().zip(PELVIS_PANELS).enumerate() {
         let mut lines: Vec<(&str, RGBColor, &Cycle)> = walks
@@ -179,9 +179,13 @@ const NORM: RGBColor = RGBColor(120, 120, 120);
 /// on level ground (a stairs walk's knee against a level band read as a 40° error).
 fn norm_name(reference: &Reference, tilt: bool, level: bool) -> String {
     let shape = if tilt { "\nshape about the walk's mean" } else { "" };
-    // Its own line: a longer first line pushed the legend's text over its swatches.
-    let ground = if level { "" } else { "\nwalking on level ground" };
-    format!("adults at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}{ground}", reference.speed_mps)
+    format!("adults at {:.2} m/s, Fukuchi 2018 (±1 SD){shape}{}", reference.speed_mps, ground_line(level))
+}
+
+/// A band's legend line for a walk off level ground (`level` false): the adults walked on the
+/// level. Its own line: a longer first line pushed the legend's text over its swatches.
+fn ground_line(level: bool) -> &'static str {
+    if level { "" } else { "\nwalking on level ground" }
 }
 
 /// The built-in references at the speed `walk` walked its drawn cycles at, as the summary's
