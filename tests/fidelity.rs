@@ -77,6 +77,8 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 3.19 / 0.975 / 0, 3.38 / 0.987 / 2, 1.63 / 0.962 / 0; session 16: 3.01 / 0.985 / 0,
         // 4.30 / 0.990 / 2, 2.02 / 0.957 / 0: the rise over the stance leg costs the hip 0.01 of
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
+        // Session 22, the pelvis nearer the heel at 0.7 and 0.8 m/s for people's vertical range
+        // (1.99 -> 2.06 cm here): 2.31 / 0.992 / 0; 3.49 / 0.986 / 0; 1.97 / 0.963 / 0.
         ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.4, 0.99, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
         // 2.68 / 0.990 / 0; 3.75 / 0.983 / 6; 1.51 / 0.980 / 0 (session 20, the walked range
         // 1.85 -> 2.20 cm; session 19: 2.48 / 0.991 / 0, 3.39 / 0.991 / 4, 1.28 / 0.985 / 0;
@@ -286,10 +288,14 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // double support (`gait_curves::PELVIS_VERTICAL_KEYS`): 1.51 / 1.97 / 2.18 / 3.04 / 3.67 cm
     // at 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s (this test's cycle; compare's 1.54 / 1.99 / 2.20 / 3.07
     // / 3.71), from 0.8 m/s inside people's mean ± 2 SD (0.78 / 0.75 of their mean at 0.8 / 1.0),
-    // held here; at 0.7 m/s (no norms that slow) 0.61 of the 0.77 m/s adults'.
+    // held here; at 0.7 m/s (no norms that slow) 0.61 of the 0.77 m/s adults'. Session 22, the
+    // mid-stance pelvis nearer the heel and the heel rise later at 0.7 and 0.8 m/s
+    // (`speed_laws`' 0.7 m/s knots, the 0.8 m/s ones moved): compare's 1.98 / 2.06 / 2.20 /
+    // 3.07 / 3.71 cm, from 0.7 m/s inside people's mean ± 2 SD (the slowest adults, 0.77 m/s,
+    // 2.49 ± 0.28, read at 0.7 m/s too), held here.
     let people = gaitlab::normative::PelvisNorms::built_in();
     let mut previous: Option<(f64, f64, f64)> = None;
-    for (speed, least_share) in [(0.7, 0.55), (0.8, 0.7), (1.0, 0.7), (1.3, 0.75), (1.6, 0.70)] {
+    for (speed, least_share) in [(0.7, 0.75), (0.8, 0.75), (1.0, 0.7), (1.3, 0.75), (1.6, 0.70)] {
         let set = format!("walk.speed_mps={speed}");
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[set]).unwrap();
@@ -305,12 +311,10 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
         if speed >= 1.3 {
             assert!(vertical >= measured - sd, "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}");
         }
-        if speed >= 0.8 {
-            assert!(
-                vertical >= measured - 2.0 * sd,
-                "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}"
-            );
-        }
+        assert!(
+            vertical >= measured - 2.0 * sd,
+            "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}"
+        );
         if let Some((v0, l0, s0)) = previous {
             // Rising with speed, falling sideways: each at least half a centimetre per m/s and
             // 1.6 cm per m/s (Orendurff's lateral falls 3.44).

@@ -56,8 +56,15 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// heel rise went to 0.34 and the loading knee peaked at 4 % of the cycle (the norms' at 12 %).
 /// The 0.4 m/s knot is the earlier law's (no norms below 0.8 m/s); the 1.75 m/s knot is fitted at
 /// brisk's speed. Session 20's 1.0 m/s knot is fitted at that speed alone, the loading knee's peak
-/// held at 8 % of the cycle or later (0.28 free, at 4 %). On stairs (`on_stairs`) the 0.8 and 1.0
-/// m/s knots of session 19 ([`STAIRS`]).
+/// held at 8 % of the cycle or later (0.28 free, at 4 %). Session 22 put the pelvis nearer the
+/// heel at 0.7 and 0.8 m/s (10.7 and 12.0 cm, the heel rise 0.34 and 0.33) for people's vertical
+/// range at the slowest speeds: walked 1.54 -> 1.98 cm at 0.7 m/s and 1.99 -> 2.06 at 0.8, against
+/// the 0.77 m/s adults' 2.49 ± 0.28 (inside ± 2 SD from 0.7 m/s, rising with speed). The price is
+/// the slow joint curves: at 0.8 m/s hip / knee / ankle RMS 2.20 / 3.41 / 1.85 -> 2.31 / 3.49 /
+/// 1.97 deg, ankle r 0.967 -> 0.963; at 0.7 m/s, against the 0.80 m/s block (none slower), 2.02 /
+/// 2.90 / 2.38 -> 3.15 / 3.66 / 3.15, ankle r 0.942 -> 0.906 (the stance hip extends 3° less and
+/// the ankle dorsiflexes 3° further before the heel rises). On stairs (`on_stairs`) the 0.8 and
+/// 1.0 m/s knots of session 19 ([`STAIRS`]).
 pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     through_knots(&knots_on(&MIDSTANCE_OFFSET_CM_KNOTS, STAIRS.midstance_offset_cm, on_stairs), speed_mps)
 }
@@ -92,8 +99,12 @@ pub(crate) fn double_support_key_share(speed_mps: f64) -> f64 {
 /// m/s and slower) to 1.3 cm (1.0 m/s) under its mid-stance, none again from 1.3 m/s (linear
 /// between [`VERTICAL_RANGE_CM_KNOTS`]): fitted in session 20 with the slow designs
 /// (`gait_curves`), whose pelvis holds its height through late stance and falls late into double
-/// support, as people's does; the walked range at 0.8 m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31),
-/// at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50). On stairs (`on_stairs`) none at any speed ([`STAIRS`]).
+/// support, as people's does; the walked range at 0.8 m/s 0.81 -> 1.99 cm (people's 2.54 ± 0.31;
+/// 2.06 with session 22's [`midstance_offset_cm`]), at 1.0 m/s 1.85 -> 2.20 (2.91 ± 0.50). Asked
+/// more at 0.7 m/s, the walk hardly moves (1.05 to 2.2 cm asked: 1.53 walked) until the reach
+/// guard gives way and both knees bend at heel strike (2.8 asked: 2.14, knee RMS 2.90 -> 4.81):
+/// where the pelvis passes over the foot is what sets the slow walk's range. On stairs
+/// (`on_stairs`) none at any speed ([`STAIRS`]).
 pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     if on_stairs { 0.0 } else { through_knots(&VERTICAL_RANGE_CM_KNOTS, speed_mps) }
 }
@@ -106,31 +117,38 @@ pub(crate) fn vertical_range_cm(speed_mps: f64, on_stairs: bool) -> f64 {
 /// session-19 slow designs (`gait_curves::CurveName::default_curve_for`) the stairs walk as
 /// they did: 7.8°. Neither calibration is fitted to stair data (none in the repository).
 pub(crate) struct StairsLaws {
-    /// The 0.8 and 1.0 m/s knots of [`midstance_offset_cm`] on stairs.
-    pub(crate) midstance_offset_cm: [(f64, f64); 2],
-    /// The 0.8 and 1.0 m/s knots of [`heel_rise_phase`] on stairs.
-    pub(crate) heel_rise_phase: [(f64, f64); 2],
+    /// The 0.7, 0.8 and 1.0 m/s knots of [`midstance_offset_cm`] on stairs.
+    pub(crate) midstance_offset_cm: [(f64, f64); 3],
+    /// The 0.7, 0.8 and 1.0 m/s knots of [`heel_rise_phase`] on stairs.
+    pub(crate) heel_rise_phase: [(f64, f64); 3],
 }
 
-/// Session 19's 0.8 and 1.0 m/s knots, kept for stairs ([`StairsLaws`]); every other knot is
-/// the level walk's ([`knots_on`]).
-pub(crate) const STAIRS: StairsLaws =
-    StairsLaws { midstance_offset_cm: [(0.8, 16.2), (1.0, 12.67)], heel_rise_phase: [(0.8, 0.31), (1.0, 0.312)] };
+/// Session 19's 0.8 and 1.0 m/s knots, kept for stairs ([`StairsLaws`]), and at 0.7 m/s the
+/// value of the line from the 0.4 m/s knot to session 19's 0.8 m/s one (the level walk's 0.7
+/// m/s knot is session 22's, fitted on level ground); every other knot is the level walk's
+/// ([`knots_on`]).
+pub(crate) const STAIRS: StairsLaws = StairsLaws {
+    midstance_offset_cm: [(0.7, 15.15), (0.8, 16.2), (1.0, 12.67)],
+    heel_rise_phase: [(0.7, 0.31), (0.8, 0.31), (1.0, 0.312)],
+};
 
-/// A law's `level` knots, on stairs (`on_stairs`) with its 0.8 and 1.0 m/s knots (the second
-/// and third) taken from `stairs`: spliced, not copied whole, so that a knot refitted for the
-/// level walk from 1.15 m/s on is the stairs' too.
-fn knots_on(level: &[(f64, f64); 8], stairs: [(f64, f64); 2], on_stairs: bool) -> [(f64, f64); 8] {
+/// A law's `level` knots, on stairs (`on_stairs`) with its 0.7, 0.8 and 1.0 m/s knots (the
+/// second to fourth) taken from `stairs`: spliced, not copied whole, so that a knot refitted for
+/// the level walk from 1.15 m/s on is the stairs' too.
+fn knots_on(level: &[(f64, f64); 9], stairs: [(f64, f64); 3], on_stairs: bool) -> [(f64, f64); 9] {
     let mut knots = *level;
     if on_stairs {
-        debug_assert!(knots[1].0 == stairs[0].0 && knots[2].0 == stairs[1].0, "the 0.8 and 1.0 m/s knots");
-        knots[1..3].copy_from_slice(&stairs);
+        debug_assert!(
+            knots[1..4].iter().zip(&stairs).all(|(level, stairs)| level.0 == stairs.0),
+            "the 0.7, 0.8 and 1.0 m/s knots"
+        );
+        knots[1..4].copy_from_slice(&stairs);
     }
     knots
 }
 
 /// The cycle phase at which the stance heel rises at `speed_mps`: linear between
-/// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.329.
+/// [`HEEL_RISE_PHASE_KNOTS`], fitted with [`midstance_offset_cm`] (see there): 0.28-0.34.
 /// Bounded where the fit would go later or sooner: at 1.3 m/s the fit took 0.318 (knee RMS 0.3°
 /// better than 0.30), but then the stance leg stands straight at its reach through the
 /// pelvis's highest point before its heel rises, and a live `walk.sway` edit there (its wider
@@ -185,8 +203,17 @@ pub(crate) fn obliquity_range_deg(speed_mps: f64) -> f64 {
 }
 
 /// (speed m/s, cm) knots of [`midstance_offset_cm`].
-const MIDSTANCE_OFFSET_CM_KNOTS: [(f64, f64); 8] =
-    [(0.4, 12.0), (0.8, 12.23), (1.0, 11.43), (1.15, 12.12), (1.3, 12.36), (1.6, 14.3), (1.75, 14.29), (2.0, 14.29)];
+const MIDSTANCE_OFFSET_CM_KNOTS: [(f64, f64); 9] = [
+    (0.4, 12.0),
+    (0.7, 10.7),
+    (0.8, 12.0),
+    (1.0, 11.43),
+    (1.15, 12.12),
+    (1.3, 12.36),
+    (1.6, 14.3),
+    (1.75, 14.29),
+    (2.0, 14.29),
+];
 
 /// (speed m/s, cm) knots of [`vertical_range_cm`].
 const VERTICAL_RANGE_CM_KNOTS: [(f64, f64); 4] = [(0.8, 1.05), (1.0, 1.3), (1.3, 0.0), (2.0, 0.0)];
@@ -196,8 +223,17 @@ const DOUBLE_SUPPORT_KEY_SHARE_KNOTS: [(f64, f64); 8] =
     [(0.4, 0.5), (0.8, 0.474), (1.0, 0.29), (1.15, 0.228), (1.3, 0.276), (1.6, 0.301), (1.75, 0.276), (2.0, 0.276)];
 
 /// (speed m/s, cycle phase) knots of [`heel_rise_phase`].
-const HEEL_RISE_PHASE_KNOTS: [(f64, f64); 8] =
-    [(0.4, 0.31), (0.8, 0.322), (1.0, 0.329), (1.15, 0.305), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293), (2.0, 0.293)];
+const HEEL_RISE_PHASE_KNOTS: [(f64, f64); 9] = [
+    (0.4, 0.31),
+    (0.7, 0.34),
+    (0.8, 0.33),
+    (1.0, 0.329),
+    (1.15, 0.305),
+    (1.3, 0.30),
+    (1.6, 0.28),
+    (1.75, 0.293),
+    (2.0, 0.293),
+];
 
 /// The value at `speed_mps` of a law given at `knots` (speeds increasing): linear between
 /// two, the end value outside.
@@ -229,13 +265,24 @@ mod tests {
         {
             assert!(close(double_support_key_share(v), share), "{v}: {}", double_support_key_share(v));
         }
-        for (v, phase) in [(0.6, 0.316), (0.8, 0.322), (1.0, 0.329), (1.3, 0.30), (1.6, 0.28), (1.75, 0.293)] {
+        for (v, phase) in [
+            (0.55, 0.325),
+            (0.7, 0.34),
+            (0.75, 0.335),
+            (0.8, 0.33),
+            (1.0, 0.329),
+            (1.3, 0.30),
+            (1.6, 0.28),
+            (1.75, 0.293),
+        ] {
             assert!(close(heel_rise_phase(v, false), phase), "{v}: {}", heel_rise_phase(v, false));
         }
         for (v, cm) in [
             (0.3, 12.0),
-            (0.6, 12.115),
-            (0.8, 12.23),
+            (0.55, 11.35),
+            (0.7, 10.7),
+            (0.75, 11.35),
+            (0.8, 12.0),
             (1.0, 11.43),
             (1.3, 12.36),
             (1.45, 13.33),
@@ -249,7 +296,9 @@ mod tests {
             assert_eq!(vertical_range_cm(v, true), 0.0);
         }
         // Stairs keep session 19's slow walk; from 1.3 m/s the laws are one.
-        for (v, cm, phase) in [(0.5, 13.05, 0.31), (0.8, 16.2, 0.31), (1.0, 12.67, 0.312)] {
+        for (v, cm, phase) in
+            [(0.5, 13.05, 0.31), (0.7, 15.15, 0.31), (0.75, 15.675, 0.31), (0.8, 16.2, 0.31), (1.0, 12.67, 0.312)]
+        {
             assert!(close(midstance_offset_cm(v, true), cm) && close(heel_rise_phase(v, true), phase), "{v}");
         }
         for v in [1.3, 1.45, 1.6, 1.75, 2.0] {
