@@ -45,7 +45,7 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
     // Session 21, the heel rise's reach softening brought in over 0.3 of its phase (0.1, the
     // knee's notch at the heel rise): within 0.1 deg of these but the 1.6 m/s hip, 2.24 -> 2.38,
     // and brisk's, 2.84 -> 2.97.
-    let cases: [(&str, &[&str], Bounds); 7] = [
+    let cases: [(&str, &[&str], Bounds); 9] = [
         // 1.88 / 0.996 / 0; 3.94 / 0.987 / 10; 2.08 / 0.977 / 0 (session 19, the norms' pelvic
         // obliquity, its RMS 2.25 -> 0.35 deg, the designs refitted to it, and the norms' rotation
         // shape (before it 1.75 / 0.996 / 0, 3.89 / 0.988 / 10, 2.08 / 0.976 / 0); session 18, the
@@ -78,7 +78,8 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 4.30 / 0.990 / 2, 2.02 / 0.957 / 0: the rise over the stance leg costs the hip 0.01 of
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
         // Session 22, the pelvis nearer the heel at 0.7 and 0.8 m/s for people's vertical range
-        // (1.99 -> 2.06 cm here): 2.31 / 0.992 / 0; 3.49 / 0.986 / 0; 1.97 / 0.963 / 0.
+        // (1.99 -> 2.06 cm here) and the swing heel's lead capped (0.15 -> 0.09): 2.33 / 0.991 / 0;
+        // 3.60 / 0.987 / 0; 2.02 / 0.963 / 0.
         ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.4, 0.99, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
         // 2.68 / 0.990 / 0; 3.75 / 0.983 / 6; 1.51 / 0.980 / 0 (session 20, the walked range
         // 1.85 -> 2.20 cm; session 19: 2.48 / 0.991 / 0, 3.39 / 0.991 / 4, 1.28 / 0.985 / 0;
@@ -89,6 +90,13 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 4.30 / 0.992 / 0, 2.20 / 0.964 / 0; session 14: 3.44 / 0.994, 6.40 / 0.989 / 16, 2.33
         // / 0.966).
         ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.35, 0.99, 0.0), (3.9, 0.98, 8.0), (1.7, 0.975, 4.0)]),
+        // Slower than the slowest norms (0.80 m/s, compared with that block): session 22's pelvis
+        // nearer the heel for people's vertical range (1.54 -> 1.97 cm at 0.7 m/s) costs the shape
+        // of the ankle, r 0.942 -> 0.906 at 0.7 and 0.953 -> 0.932 at 0.75 m/s, under issue 12's
+        // 0.95 (asked at 0.8 m/s and up): 3.03 / 0.991 / 0; 3.67 / 0.989 / 0; 3.15 / 0.906 / 0 and
+        // 2.56 / 0.991 / 0; 3.56 / 0.989 / 0; 2.62 / 0.932 / 0.
+        ("configs/default.toml", &["walk.speed_mps=0.7"], [(3.2, 0.985, 0.0), (3.9, 0.985, 4.0), (3.3, 0.9, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=0.75"], [(2.7, 0.985, 0.0), (3.8, 0.985, 4.0), (2.8, 0.925, 4.0)]),
         // As the default.
         ("configs/default.toml", &["walk.speed_mps=1.3"], [(1.8, 0.995, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
         // 2.30 / 0.994 / 0; 3.99 / 0.984 / 10; 2.32 / 0.974 / 0 (session 19; session 18: 1.91 /
@@ -185,6 +193,38 @@ fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
             "{speed} m/s: loading knee {deg:.1}, norms {norm_deg:.1} deg"
         );
         assert!(pct.abs_diff(norm_pct) <= 4, "{speed} m/s: loading knee at {pct} %, norms at {norm_pct} %");
+    }
+}
+
+/// Terminal swing: the knee straightens on to heel strike, as people's does (0.8 m/s: 12.9 /
+/// 6.4 / 2.0 / 0.4° at 92 / 94 / 96 / 98 %), without bending again first. Session 22's slow
+/// mid-stance pelvis nearer the heel had the swing heel, arriving sooner (`speed_laws::
+/// swing_lead`), land ahead of the hip's reach: the knee straightened at the limit at 93 % and
+/// bent again by up to 3.5° (0.70-0.75 m/s, every cycle, both legs; the fidelity figures did not
+/// see it, 8.0° at 96 % is inside people's ± 2 SD). Measured with the lead capped at 0.09: the
+/// knee's increments after 88 % of each leg's cycle sum to 0.0-0.13° from 0.5 to 0.95 m/s (0.87
+/// at 1.0 and 1.3, 1.42 at 1.6 m/s, older and not fixed).
+#[test]
+fn the_swing_knee_straightens_on_to_heel_strike_at_slow_speeds() {
+    for speed in [0.5, 0.6, 0.64, 0.7, 0.72, 0.74, 0.76, 0.8, 0.84, 0.9] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
+        let params = gaitlab::config::load(&path, &[format!("walk.speed_mps={speed}")]).unwrap();
+        let run = gaitlab::analysis::run(&params, 8.0, 60.0).unwrap();
+        for side in 0..2 {
+            // Each leg's terminal swing: from 88 % of its cycle to the heel strike that wraps it.
+            let mut re_flexion = 0.0_f64;
+            let mut worst = 0.0_f64;
+            for w in run.frames.windows(2).filter(|w| w[0].time_s >= 2.0) {
+                let (a, b) = (&w[0].legs[side], &w[1].legs[side]);
+                if b.phase < a.phase {
+                    worst = worst.max(re_flexion);
+                    re_flexion = 0.0;
+                } else if a.phase >= 0.88 {
+                    re_flexion += (b.knee_flex_deg - a.knee_flex_deg).max(0.0);
+                }
+            }
+            assert!(worst < 0.5, "{speed} m/s, leg {side}: the knee bends again {worst:.2} deg before heel strike");
+        }
     }
 }
 
@@ -290,7 +330,7 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // / 3.71), from 0.8 m/s inside people's mean ± 2 SD (0.78 / 0.75 of their mean at 0.8 / 1.0),
     // held here; at 0.7 m/s (no norms that slow) 0.61 of the 0.77 m/s adults'. Session 22, the
     // mid-stance pelvis nearer the heel and the heel rise later at 0.7 and 0.8 m/s
-    // (`speed_laws`' 0.7 m/s knots, the 0.8 m/s ones moved): compare's 1.98 / 2.06 / 2.20 /
+    // (`speed_laws`' 0.7 m/s knots, the 0.8 m/s ones moved): compare's 1.97 / 2.06 / 2.20 /
     // 3.07 / 3.71 cm, from 0.7 m/s inside people's mean ± 2 SD (the slowest adults, 0.77 m/s,
     // 2.49 ± 0.28, read at 0.7 m/s too), held here.
     let people = gaitlab::normative::PelvisNorms::built_in();

@@ -491,7 +491,7 @@ fn the_stance_leg_reaches_until_its_heel_rises_whatever_the_mid_stance_drop() {
 /// ends in the walk of the new phase. A heel strike always finds the other leg inside its heel
 /// rise, so a restore at heel strikes alone kept the old phase for good: after 1.3 -> 1.6 m/s
 /// the heels rose at 0.31 of the cycle instead of the law's 0.28 of then, and a typed 0.36 was
-/// shown but never walked. (The law now gives 0.30 at 1.3 m/s and 0.322 at 0.8.)
+/// shown but never walked. (The law now gives 0.30 at 1.3 m/s and 0.33 at 0.8.)
 #[test]
 fn a_change_of_heel_rise_phase_reaches_the_walk() {
     for (text, wanted) in [("[walk]\nspeed_mps = 0.8\n", 0.33), ("[legs]\nheel_rise = 0.36\n", 0.36)] {
@@ -562,7 +562,7 @@ fn the_stance_rise_keeps_both_feet_and_takes_no_corner() {
 /// pelvis's vertical speed from the change on, mm a frame per frame): read live 4.23, frozen
 /// 2.03, against the same walk's own 0.66 without a change and 0.20 for the keyed walk with it.
 /// What is left comes with the keys the change re-guards; held here below 2.2. Session 20's
-/// slow walk (its pelvis falling late and steeply into double support, its heel rising at 0.322
+/// slow walk (its pelvis falling late and steeply into double support, its heel rising at 0.322 then
 /// of the cycle, past the mid-stance key's 0.32) first read 6.41 lifted and 3.02 keyed: the
 /// guard lowered the coming double support 9.4 cm for a 3.4 mm deficit just past the key,
 /// where that key hardly moves the pelvis (`reach_guard`'s `MOVING_WEIGHT`). Now 2.20 lifted,

@@ -58,13 +58,14 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// brisk's speed. Session 20's 1.0 m/s knot is fitted at that speed alone, the loading knee's peak
 /// held at 8 % of the cycle or later (0.28 free, at 4 %). Session 22 put the pelvis nearer the
 /// heel at 0.7 and 0.8 m/s (10.7 and 12.0 cm, the heel rise 0.34 and 0.33) for people's vertical
-/// range at the slowest speeds: walked 1.54 -> 1.98 cm at 0.7 m/s and 1.99 -> 2.06 at 0.8, against
+/// range at the slowest speeds: walked 1.54 -> 1.97 cm at 0.7 m/s and 1.99 -> 2.06 at 0.8, against
 /// the 0.77 m/s adults' 2.49 ± 0.28 (inside ± 2 SD from 0.7 m/s, rising with speed). The price is
-/// the slow joint curves: at 0.8 m/s hip / knee / ankle RMS 2.20 / 3.41 / 1.85 -> 2.31 / 3.49 /
-/// 1.97 deg, ankle r 0.967 -> 0.963; at 0.7 m/s, against the 0.80 m/s block (none slower), 2.02 /
-/// 2.90 / 2.38 -> 3.15 / 3.66 / 3.15, ankle r 0.942 -> 0.906 (the stance hip extends 3° less and
-/// the ankle dorsiflexes 3° further before the heel rises). On stairs (`on_stairs`) the 0.8 and
-/// 1.0 m/s knots of session 19 ([`STAIRS`]).
+/// the slow joint curves (with [`swing_lead`]'s cap): at 0.8 m/s hip / knee / ankle RMS 2.20 /
+/// 3.41 / 1.85 -> 2.33 / 3.60 / 2.02 deg, ankle r 0.967 -> 0.963; at 0.7 m/s, against the 0.80
+/// m/s block (none slower), 2.02 / 2.90 / 2.38 -> 3.03 / 3.67 / 3.15, ankle r 0.942 -> 0.906 (the
+/// stance hip extends 2.4° less and the ankle dorsiflexes 3° further before the heel rises);
+/// below 0.7 m/s too (hip RMS 2.10 -> 2.68 at 0.6 m/s). On stairs (`on_stairs`) the 0.8 and 1.0
+/// m/s knots of session 19 ([`STAIRS`]).
 pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
     through_knots(&knots_on(&MIDSTANCE_OFFSET_CM_KNOTS, STAIRS.midstance_offset_cm, on_stairs), speed_mps)
 }
@@ -171,8 +172,16 @@ pub(crate) fn heel_rise_phase(speed_mps: f64, on_stairs: bool) -> f64 {
 /// leg reaches ahead; 0.15 keeps their sum lowest); at 1.0 m/s 0.09 gives 6.40 / 3.44 (6.97 /
 /// 3.27 without). At 1.3 m/s a sooner heel made the knee worse: the forward curve's keys 0.03
 /// to 0.04 sooner (as a lead of 0.13 to 0.26 moves them) took it 4.91 -> 5.36 deg.
+/// At most 0.09 (1.0 m/s and slower): with the slow mid-stance pelvis nearer the heel
+/// ([`midstance_offset_cm`], session 22) a heel that arrives sooner lands ahead of where the hip
+/// can reach it, the knee straightens at the reach limit at 93 % of the cycle and bends again
+/// before heel strike, up to 3.5° (the hip 2°) at 0.70-0.75 m/s, every cycle, where people's
+/// straightens on to heel strike. Capped at 0.09 the knee's re-flexion after 88 % of the cycle
+/// is 0.0 / 0.1 / 0.0 / 0.0 / 0.0° at 0.64 / 0.7 / 0.74 / 0.8 / 0.9 m/s (0.4 / 3.2 / 3.5 / 1.3 /
+/// 0.7 uncapped) and its largest acceleration 5.6 / 5.6 / 5.5 / 6.1 / 6.2°/frame² (5.7 / 6.5 /
+/// 7.3 / 6.3 / 6.4); knee RMS 3.66 -> 3.67 at 0.7 m/s, 3.49 -> 3.60 at 0.8, 3.37 -> 3.41 at 0.9.
 pub(crate) fn swing_lead(speed_mps: f64) -> f64 {
-    (0.3 * (1.3 - speed_mps)).clamp(0.0, 0.3)
+    (0.3 * (1.3 - speed_mps)).clamp(0.0, 0.09)
 }
 
 /// How far the pelvis rises toward the standing stance leg through single support at
@@ -311,7 +320,7 @@ mod tests {
         for (v, deg) in [(0.3, 8.2), (0.8, 8.2), (1.0, 9.74), (1.3, 12.05), (1.6, 14.36), (1.8, 14.5)] {
             assert!(close(obliquity_range_deg(v), deg), "{v}: {}", obliquity_range_deg(v));
         }
-        for (v, lead) in [(0.5, 0.24), (0.8, 0.15), (1.0, 0.09), (1.3, 0.0), (1.6, 0.0)] {
+        for (v, lead) in [(0.5, 0.09), (0.8, 0.09), (1.0, 0.09), (1.15, 0.045), (1.3, 0.0), (1.6, 0.0)] {
             assert!(close(swing_lead(v), lead), "{v}: {}", swing_lead(v));
         }
     }

@@ -276,7 +276,7 @@ impl Walker {
             // lowered by four times the deficit on each of the guard's passes it sank the
             // coming double support 9.4 cm for a 3.4 mm deficit just past the mid-stance key (a
             // live `ik.reach_margin` change at 0.8 m/s, the stance's last sample past the key
-            // once its heel rise, 0.322 of the cycle, passed the key's 0.32). Such a deficit is
+            // once its heel rise, then 0.322 of the cycle, passed the key's 0.32). Such a deficit is
             // the standing heel's to take (`rise_heel_where_out_of_reach`).
             let Some((kind, weight)) = choice.filter(|&(_, w)| w >= MOVING_WEIGHT) else { continue };
             let need = deficit / weight + 1e-4;

@@ -111,7 +111,8 @@ fn standing_distance(r: &Resolved, q: f64, heel_rise: f64) -> f64 {
 /// m/s², rounded over 0.5 mm 4.3 / 2.8). Session 20's slow walk falls later and more steeply
 /// into double support and rises out of it as the other leg's lift ramps in: over 0.5 mm a
 /// heel rise at 0.33 / 0.35 / 0.37 turned 5.6 / 9.0 / 6.3 m/s², over 2 mm 3.2 / 4.4 / 3.0, over
-/// 3 mm 3.3 / 2.8 / 1.9 (the default 0.322's own 3.4, its joint curves unchanged).
+/// 3 mm 3.3 / 2.8 / 1.9 (the 0.8 m/s default's then, 0.322, its own 3.4, its joint curves
+/// unchanged; the default since session 22 is 0.33).
 const CAP_BEND_M: f64 = 0.003;
 
 /// `max(x, 0)` with its corner rounded over [`CAP_BEND_M`]: ln(1 + eˣ) scaled (2.1 mm at 0).
