@@ -196,6 +196,33 @@ fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
     }
 }
 
+/// Another body is compared with the same adults: the calibrated laws are for a 1.75 m body,
+/// and the mid-stance offset (cm) is scaled with the height, as the step is. Measured session 22
+/// (hip / knee / ankle RMS, the offset scaled -> left at the 1.75 m body's): 1.95 m at 1.3 m/s
+/// 2.93 / 4.57 / 1.91 against 4.21 / 6.56 / 2.85, at 1.6 m/s 3.74 / 5.13 / 2.42 against 4.38 /
+/// 7.34 / 3.27; 1.55 m at 1.3 m/s 3.30 / 5.54 / 2.90 against 4.52 / 6.62 / 1.81, at 1.6 m/s 4.06 /
+/// 6.26 / 2.78 against 5.67 / 7.40 / 2.79. The short body's ankle is the price (at 1.3 m/s).
+#[test]
+fn a_taller_or_shorter_body_walks_its_own_offset_nearer_the_norms() {
+    for (height, speed, unscaled_offset_cm) in
+        [(1.95, 1.3, 12.36), (1.95, 1.6, 14.3), (1.55, 1.3, 12.36), (1.55, 1.6, 14.3)]
+    {
+        let (h, v) = (format!("body.height_m={height}"), format!("walk.speed_mps={speed}"));
+        let unscaled = format!("pelvis.midstance_offset_cm={unscaled_offset_cm}");
+        let scaled = compare("configs/default.toml", &[&h, &v]);
+        let kept = compare("configs/default.toml", &[&h, &v, &unscaled]);
+        let rms = |c: &Comparison, curve: &str| c.curves.iter().find(|k| k.curve == curve).unwrap().rms_deg;
+        let (hip, knee) = (rms(&scaled, "hip_flex"), rms(&scaled, "knee_flex"));
+        assert!(
+            knee < rms(&kept, "knee_flex") - 1.0 && hip < rms(&kept, "hip_flex") - 0.5,
+            "{height} m at {speed} m/s: hip {hip:.2}, knee {knee:.2} against {:.2}, {:.2} unscaled",
+            rms(&kept, "hip_flex"),
+            rms(&kept, "knee_flex")
+        );
+        assert!(knee < 6.5 && hip < 4.2, "{height} m at {speed} m/s: hip {hip:.2}, knee {knee:.2}");
+    }
+}
+
 /// Terminal swing: the knee straightens on to heel strike, as people's does (0.8 m/s: 12.9 /
 /// 6.4 / 2.0 / 0.4° at 92 / 94 / 96 / 98 %), without bending again first. Session 22's slow
 /// mid-stance pelvis nearer the heel had the swing heel, arriving sooner (`speed_laws::

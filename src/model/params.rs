@@ -523,7 +523,7 @@ impl WalkParams {
     ///   (`speed_laws::midstance_drop_cm`);
     /// - mid-stance offset, the lowest point's share of the double support and the heel-rise
     ///   phase: laws given at knots from 0.4 to 2.0 m/s, fitted to the speed-matched norms (on
-    ///   stairs, slower than 1.3 m/s, session 19's: `speed_laws::STAIRS`)
+    ///   stairs, slower than 1.3 m/s, session 19's: `speed_laws::STAIRS`; the offset with height)
     ///   (`speed_laws::midstance_offset_cm`, `double_support_key_share`, `heel_rise_phase`);
     /// - stance rise all the way to the standing stance leg up to 0.8 m/s, none from 1.3 m/s
     ///   (`speed_laws::stance_rise`);
@@ -580,7 +580,7 @@ impl WalkParams {
             vertical_range: p.vertical_range_cm.unwrap_or(vertical_range_cm(v, stairs)).max(0.0) / 100.0,
             lateral_range: p.lateral_range_cm.unwrap_or((6.9 - 3.44 * (v - 0.7)).max(1.0)) * sway / 100.0,
             midstance_drop: p.midstance_drop_cm.unwrap_or(midstance_drop_cm(v)) / 100.0,
-            midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v, stairs)) / 100.0,
+            midstance_offset: p.midstance_offset_cm.unwrap_or(midstance_offset_cm(v, stairs, b.height_m)) / 100.0,
             stance_rise: p.stance_rise.unwrap_or(stance_rise(v)),
             trunk_lean: deg(p.trunk_lean_deg),
             rest_tilt: deg(p.rest_tilt_deg),

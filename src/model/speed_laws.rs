@@ -66,8 +66,16 @@ pub(crate) fn midstance_drop_cm(speed_mps: f64) -> f64 {
 /// stance hip extends 2.4° less and the ankle dorsiflexes 3° further before the heel rises);
 /// below 0.7 m/s too (hip RMS 2.10 -> 2.68 at 0.6 m/s). On stairs (`on_stairs`) the 0.8 and 1.0
 /// m/s knots of session 19 ([`STAIRS`]).
-pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool) -> f64 {
-    through_knots(&knots_on(&MIDSTANCE_OFFSET_CM_KNOTS, STAIRS.midstance_offset_cm, on_stairs), speed_mps)
+///
+/// The knots are for a 1.75 m body; a body `height_m` tall gets them scaled with its height, as
+/// [`WALK_RATIO_PER_175`] scales its step. Unscaled (before session 22), the calibration held at
+/// 1.75 m only (hip / knee / ankle RMS): 1.95 m 4.21 / 6.56 / 2.85 at 1.3 m/s and 4.38 / 7.34 /
+/// 3.27 at 1.6; scaled, 2.93 / 4.57 / 1.91 and 3.74 / 5.13 / 2.42; 1.55 m at 1.6 m/s 5.67 / 7.40 /
+/// 2.79 -> 4.06 / 6.26 / 2.78 (docs/gait-model.md §12, session 22, for every height and speed
+/// measured, and where it is worse).
+pub(crate) fn midstance_offset_cm(speed_mps: f64, on_stairs: bool, height_m: f64) -> f64 {
+    let knots = knots_on(&MIDSTANCE_OFFSET_CM_KNOTS, STAIRS.midstance_offset_cm, on_stairs);
+    through_knots(&knots, speed_mps) * height_m / 1.75
 }
 
 /// Where the pelvis passes its lowest point, as a share of the double support after heel
@@ -298,7 +306,7 @@ mod tests {
             (1.6, 14.3),
             (2.0, 14.29),
         ] {
-            assert!(close(midstance_offset_cm(v, false), cm), "{v}: {}", midstance_offset_cm(v, false));
+            assert!(close(midstance_offset_cm(v, false, 1.75), cm), "{v}: {}", midstance_offset_cm(v, false, 1.75));
         }
         for (v, cm) in [(0.5, 1.05), (0.8, 1.05), (0.9, 1.175), (1.0, 1.3), (1.15, 0.65), (1.3, 0.0), (1.6, 0.0)] {
             assert!(close(vertical_range_cm(v, false), cm), "{v}: {}", vertical_range_cm(v, false));
@@ -308,10 +316,11 @@ mod tests {
         for (v, cm, phase) in
             [(0.5, 13.05, 0.31), (0.7, 15.15, 0.31), (0.75, 15.675, 0.31), (0.8, 16.2, 0.31), (1.0, 12.67, 0.312)]
         {
-            assert!(close(midstance_offset_cm(v, true), cm) && close(heel_rise_phase(v, true), phase), "{v}");
+            assert!(close(midstance_offset_cm(v, true, 1.75), cm) && close(heel_rise_phase(v, true), phase), "{v}");
         }
         for v in [1.3, 1.45, 1.6, 1.75, 2.0] {
-            assert!(close(midstance_offset_cm(v, true), midstance_offset_cm(v, false)), "{v}");
+            assert!(close(midstance_offset_cm(v, true, 1.75), midstance_offset_cm(v, false, 1.75)), "{v}");
+            assert!(close(midstance_offset_cm(v, false, 1.96), 1.12 * midstance_offset_cm(v, false, 1.75)), "{v}");
             assert!(close(heel_rise_phase(v, true), heel_rise_phase(v, false)), "{v}");
         }
         for (v, drop) in [(0.9, 0.0), (1.3, 0.8), (1.6, 0.2), (1.75, 0.0)] {
