@@ -405,6 +405,18 @@ impl SwingCurvesAt {
     }
 }
 
+/// Over what share of the swing the foot's toe-off pitch rate dies away (an exponential's time
+/// constant) while the swing takes the foot over from the stance ([`swing_target`]). Held at
+/// its toe-off pitch, a foot that had pitched 7-8° a frame into toe-off stopped at once and
+/// the shank swinging back under it dorsiflexed the ankle for a frame: a notch at toe-off in
+/// every joint plot (1.3 m/s: -3.7 / -11.2 / -8.8 / -11.2 / -13.3° on the frames from 0.606 to
+/// 0.672 of the cycle) and the walk's largest joint acceleration (12.2°/frame² at 1.3 m/s).
+/// Carried on at the full rate (a straight line) the foot overshot: push-off 23° on the default
+/// walk, people's 14.5. Dying away over 0.02 of the swing (a third of a frame at 1.3 m/s; at
+/// most 3.4° more): push-off 13.3 -> 14.1° (brisk 19.2 -> 19.5, people's range 12-20), the ankle's
+/// largest acceleration 12.2 -> 9.1°/frame² (docs/gait-model.md §12, session 22).
+const PITCH_CARRY_SWING_SHARE: f64 = 0.02;
+
 /// The swing leg's target at swing fraction `s` [6.3.2]: heel forward on the forward curve
 /// scaled by the distance from the toe-off heel to the footfall, sideways from the step-width
 /// line toward the hip line and back, up on the heel-height curve; the foot set by the ankle
@@ -432,13 +444,16 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
     let y = plan.ground_from + at.heel_height;
     let heel = DVec3::new(x, y, z);
     let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, at.ankle_deg.to_radians(), r);
-    // Just after toe-off the foot keeps its pitch and hands it to the ankle curve over the
+    // Just after toe-off the foot keeps its pitch, carried on briefly at the rate it left the
+    // ground with ([`PITCH_CARRY_SWING_SHARE`]), and hands it to the ankle curve over the
     // first 15 % of the swing. Hung from the shank at once, a leg still stretched from the
     // push-off feeds on itself: the hip runs ahead, the shank leans, the steeper foot drops
     // the ankle further from the hip (on stairs up the knee locked out of reach).
     if s < 0.15 {
         let w = s / 0.15;
-        pitch = plan.pitch_from + w * w * (3.0 - 2.0 * w) * (pitch - plan.pitch_from);
+        let carried = plan.pitch_from
+            + plan.pitch_rate_from * PITCH_CARRY_SWING_SHARE * (1.0 - (-s / PITCH_CARRY_SWING_SHARE).exp());
+        pitch = carried + w * w * (3.0 - 2.0 * w) * (pitch - carried);
     }
     // The heel must land first even where the pelvis ends up lower or further back than the
     // planner foresaw (the optimiser and the reach guard move it after the ankle curve is

@@ -84,9 +84,11 @@ pub struct SwingPlan {
     pub to: Footfall,
     /// Toe bend at toe-off (rad); returns to neutral over the first fifth of the swing.
     pub(crate) toe_bend_from: f64,
-    /// Foot pitch at toe-off (rad): held at first, handed to the ankle curve over the first
-    /// 15 % of the swing.
+    /// Foot pitch at toe-off (rad): carried on at its toe-off rate at first, handed to the
+    /// ankle curve over the first 15 % of the swing.
     pub(crate) pitch_from: f64,
+    /// How fast the foot's pitch was changing at toe-off (rad per unit of swing fraction).
+    pub(crate) pitch_rate_from: f64,
     /// Heel progress 0→1 toward the footfall.
     pub forward: Curve,
     /// How far ahead of the design curve the heel moves forward, frozen when the step is
