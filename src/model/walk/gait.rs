@@ -412,7 +412,7 @@ impl SwingCurvesAt {
 /// every joint plot (1.3 m/s: -3.7 / -11.2 / -8.8 / -11.2 / -13.3° on the frames from 0.606 to
 /// 0.672 of the cycle) and the walk's largest joint acceleration (12.2°/frame² at 1.3 m/s).
 /// Carried on at the full rate (a straight line) the foot overshot: push-off 23° on the default
-/// walk, people's 14.5. Dying away over 0.02 of the swing (a third of a frame at 1.3 m/s; at
+/// walk, people's 14.5. Dying away over 0.02 of the swing (under half a frame at 1.3 m/s; at
 /// most 3.4° more): push-off 13.3 -> 14.1° (brisk 19.2 -> 19.5, people's range 12-20), the ankle's
 /// largest acceleration 12.2 -> 9.1°/frame² (docs/gait-model.md §12, session 22).
 const PITCH_CARRY_SWING_SHARE: f64 = 0.02;
