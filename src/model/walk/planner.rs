@@ -97,7 +97,7 @@ impl Walker {
             to,
             toe_bend_from: toe_off_pose.target.toe_bend,
             pitch_from: toe_off_pose.target.pitch,
-            pitch_rate_from: self.toe_off_pitch_rate(side, ground_from, &to),
+            pitch_rate_from: self.toe_off_pitch_rate(side, kind, toe_off_pose, &to),
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
             lead: self.swing_lead(ground_from, &to),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
@@ -144,16 +144,22 @@ impl Walker {
 
     /// How fast `side`'s stance foot pitches into its toe-off (rad per unit of the coming
     /// swing's fraction): the heel-rise target a hundredth of the cycle before toe-off and at it.
-    /// On level steps only (from `ground_from` to `to`), as [`Self::swing_lead`]: carried on up a
-    /// flight, the foot steepened while the leg was still stretched from the push-off and
-    /// stairs_up at 1.5 and 1.6 m/s lost reach for a frame (`tests/stairs.rs`).
-    fn toe_off_pitch_rate(&self, side: Side, ground_from: f64, to: &Footfall) -> f64 {
-        if (to.heel.y - ground_from).abs() >= 0.01 {
-            return 0.0;
-        }
+    /// None on a step that is not level (as [`Self::swing_lead`]: carried on up a flight, the
+    /// foot steepened while the leg was still stretched from the push-off and stairs_up at 1.5
+    /// and 1.6 m/s lost reach for a frame, `tests/stairs.rs`), nor into a step that is not a
+    /// steady one, nor where the foot did not leave the ground in the pose its heel-rise target
+    /// gives (`toe_off_pose`, 0.5° or more apart): a start's first two swings and a stop's
+    /// closing step leave from stances of their own, and carried on the swing toe dipped 2-7 mm
+    /// into the ground it left (a reviewer's find).
+    fn toe_off_pitch_rate(&self, side: Side, kind: StepKind, toe_off_pose: &LegPose, to: &Footfall) -> f64 {
         let leg = &self.legs[side.index()];
         let toe_off = leg.cycle_start + leg.toe_off;
         let pitch_at = |phase: f64| self.gait.target_of(leg, phase, self.pelvis_at(phase).hip(side.sign())).pitch;
+        let level = (to.heel.y - leg.footfall.heel.y).abs() < 0.01;
+        let as_designed = (pitch_at(toe_off) - toe_off_pose.target.pitch).abs() < 0.5_f64.to_radians();
+        if !(level && kind == StepKind::Steady && as_designed) {
+            return 0.0;
+        }
         let step = 0.01;
         (pitch_at(toe_off) - pitch_at(toe_off - step)) / step * (1.0 - leg.toe_off)
     }
