@@ -14,6 +14,7 @@ use crate::model::search::Candidate;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SwingCurvesAt, shank_angle, swing_target_at};
 use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
+use crate::model::walk::pace::LEVEL_M;
 use crate::model::walk::pace_state::StepKind;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
 use crate::model::walk::pose::solve_leg;
@@ -149,26 +150,26 @@ impl Walker {
     /// and 1.6 m/s lost reach for a frame, `tests/stairs.rs`), nor into a step that is not a
     /// steady one, nor where the foot did not leave the ground in the pose its heel-rise target
     /// gives (`toe_off_pose`, 0.5° or more apart): a start's first two swings and a stop's
-    /// closing step leave from stances of their own, and carried on the swing toe dipped 2-7 mm
-    /// into the ground it left (a reviewer's find).
+    /// closing step leave from stances of their own, and carried on the swing toe dipped 1.6-7.3
+    /// mm into the ground it left (a reviewer's find).
     fn toe_off_pitch_rate(&self, side: Side, kind: StepKind, toe_off_pose: &LegPose, to: &Footfall) -> f64 {
         let leg = &self.legs[side.index()];
         let toe_off = leg.cycle_start + leg.toe_off;
         let pitch_at = |phase: f64| self.gait.target_of(leg, phase, self.pelvis_at(phase).hip(side.sign())).pitch;
-        let level = (to.heel.y - leg.footfall.heel.y).abs() < 0.01;
-        let as_designed = (pitch_at(toe_off) - toe_off_pose.target.pitch).abs() < 0.5_f64.to_radians();
-        if !(level && kind == StepKind::Steady && as_designed) {
+        let at_toe_off = pitch_at(toe_off);
+        let as_designed = (at_toe_off - toe_off_pose.target.pitch).abs() < 0.5_f64.to_radians();
+        if !(level_step(leg.footfall.heel.y, to) && kind == StepKind::Steady && as_designed) {
             return 0.0;
         }
         let step = 0.01;
-        (pitch_at(toe_off) - pitch_at(toe_off - step)) / step * (1.0 - leg.toe_off)
+        (at_toe_off - pitch_at(toe_off - step)) / step * (1.0 - leg.toe_off)
     }
 
     /// The swing heel's lead ahead of the forward design curve (the speed law `swing_lead`),
     /// on level steps only: onto a stair or down a slope a heel brought forward sooner met a
     /// nosing before the swing simulation saw it (stairs_down at 0.5 m/s).
     fn swing_lead(&self, ground_from: f64, to: &Footfall) -> f64 {
-        if (to.heel.y - ground_from).abs() < 0.01 { self.gait.r.swing_lead } else { 0.0 }
+        if level_step(ground_from, to) { self.gait.r.swing_lead } else { 0.0 }
     }
 
     /// The step's ankle curve and the foot–ground angle it strikes `to` at with the hip at
@@ -514,6 +515,13 @@ impl Walker {
         }
         (heel_deficit, toe_deficit)
     }
+}
+
+/// Whether a step from ground at height `ground_from` lands on `to` at the same height (within
+/// [`LEVEL_M`]): the swing's early heel and its carried toe-off pitch are for such steps only.
+/// Unlike [`super::pace::even_between`] a slope's rise over the step counts as not level.
+fn level_step(ground_from: f64, to: &Footfall) -> bool {
+    (to.heel.y - ground_from).abs() < LEVEL_M
 }
 
 /// How much further than its toe-off angle the ankle may plantarflex after toe-off (deg).
