@@ -61,6 +61,15 @@ pub fn checks(frames: &[Frame]) -> Checks {
         let mut start: Option<(u64, glam::DVec3)> = None;
         for f in frames {
             let leg = &f.legs[i];
+            // Swinging feet too: a toe that clips a stair's riser is as much under the ground
+            // as a planted one.
+            for (ground, y) in [(leg.ground_under_heel, leg.heel.y), (leg.ground_under_toe, leg.toe.y)] {
+                let depth = (ground - y) * 1000.0;
+                if depth > c.terrain_penetration_mm {
+                    c.terrain_penetration_mm = depth;
+                    c.worst_penetration = Some((f.frame, side));
+                }
+            }
             let contact = match leg.leg_phase {
                 LegPhase::LoadingResponse => leg.heel,
                 // The toe, not the ankle: a leg past reach after a live change lifts its heel
@@ -81,13 +90,6 @@ pub fn checks(frames: &[Frame]) -> Checks {
                     }
                 }
                 _ => start = Some((leg.phase_serial, contact)),
-            }
-            for (ground, y) in [(leg.ground_under_heel, leg.heel.y), (leg.ground_under_toe, leg.toe.y)] {
-                let depth = (ground - y) * 1000.0;
-                if depth > c.terrain_penetration_mm {
-                    c.terrain_penetration_mm = depth;
-                    c.worst_penetration = Some((f.frame, side));
-                }
             }
             if !leg.reached {
                 c.reach_failures += 1;

@@ -177,13 +177,28 @@ impl Terrain {
         }
     }
 
+    /// The higher of the two heights a riser has at its x (m), the nosing's: read just
+    /// either side, as `start + i · run` can round to either tread.
+    #[must_use]
+    pub(crate) fn corner_top(&self, x: f64) -> f64 {
+        self.height(x - 1e-9).max(self.height(x)).max(self.height(x + 1e-9))
+    }
+
+    /// How far the ground jumps at `x` (m): a riser's height at a stair's corner, 0 where the
+    /// ground is continuous (a slope's start, rough ground's vertices).
+    #[must_use]
+    pub(crate) fn riser_height_at(&self, x: f64) -> f64 {
+        let below = self.height(x - 1e-9).min(self.height(x)).min(self.height(x + 1e-9));
+        self.corner_top(x) - below
+    }
+
     /// Highest ground between `x0` and `x1` (corners included).
     #[must_use]
     pub(crate) fn max_height_between(&self, x0: f64, x1: f64) -> f64 {
         let mut h = self.height(x0).max(self.height(x1));
         for c in self.corners_between(x0, x1) {
             // A riser has two heights at one x: take the upper one.
-            h = h.max(self.height(c)).max(self.height(c - 1e-9));
+            h = h.max(self.corner_top(c));
         }
         h
     }
@@ -217,7 +232,7 @@ impl Terrain {
     /// nosing. Other kinds return `heel_x` unchanged.
     #[must_use]
     pub(crate) fn settle_footfall(&self, heel_x: f64, foot_m: f64, margin_m: f64) -> f64 {
-        let TerrainKind::Stairs { run_m, count, start_x_m, .. } = &self.kind else {
+        let TerrainKind::Stairs { run_m, count, start_x_m, up, .. } = &self.kind else {
             return heel_x;
         };
         let last_nosing = start_x_m + (*count as f64 - 1.0) * run_m;
@@ -234,7 +249,10 @@ impl Terrain {
         let mut best_d = f64::INFINITY;
         for i in -1..=(*count as i64) {
             let nosing = start_x_m + i as f64 * run_m;
-            for cand in [nosing + margin_m, nosing - foot_m - margin_m] {
+            // Down a flight the heel lands further onto the tread where it fits: it comes
+            // down past the nosing and needs room to (15 cm in the last 1.5 cm of its way).
+            let heel_past = if *up { margin_m } else { (3.0 * margin_m).min(run_m - foot_m - margin_m).max(margin_m) };
+            for cand in [nosing + heel_past, nosing - foot_m - margin_m] {
                 if cand > last_nosing + margin_m && i < *count as i64 - 1 {
                     continue;
                 }
@@ -333,6 +351,37 @@ mod tests {
         let x = t.settle_footfall(1.2, 0.26, 0.015);
         assert!(t.corners_between(x - 0.015 + 1e-9, x + 0.275 - 1e-9).is_empty(), "{x}");
         assert_eq!(t.settle_footfall(0.5, 0.26, 0.015), 0.5);
+    }
+
+    #[test]
+    fn a_riser_reads_its_nosing_whichever_tread_its_x_rounds_to() {
+        let up = Terrain::new(TerrainKind::Stairs { rise_m: 0.15, run_m: 0.34, count: 8, up: true, start_x_m: 2.0 });
+        let riser = up.corners_between(2.3, 2.4)[0];
+        // 2.0 + 1 · 0.34 rounds down to the lower tread: its nosing is the upper one's height.
+        assert!((up.height(riser) - 0.15).abs() < 1e-12);
+        assert!((up.corner_top(riser) - 0.30).abs() < 1e-12);
+        assert!((up.riser_height_at(riser) - 0.15).abs() < 1e-12);
+        let down = Terrain::new(TerrainKind::Stairs { rise_m: 0.15, run_m: 0.34, count: 8, up: false, start_x_m: 2.0 });
+        assert!((down.corner_top(riser) + 0.15).abs() < 1e-12);
+        assert!((down.riser_height_at(riser) - 0.15).abs() < 1e-12);
+        // A slope's start and rough ground's vertices are corners without a riser.
+        let slope = Terrain::new(TerrainKind::Slope { grade_pct: 10.0, start_x_m: 2.0 });
+        assert!(slope.riser_height_at(2.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn down_a_flight_a_heel_lands_further_past_the_nosing() {
+        let kind = |up| TerrainKind::Stairs { rise_m: 0.15, run_m: 0.34, count: 8, up, start_x_m: 2.0 };
+        // Nominally the heel would land 1 cm past the second nosing, the foot fitting nowhere nearer.
+        let nosing = 2.34;
+        let up = Terrain::new(kind(true)).settle_footfall(nosing + 0.01, 0.26, 0.015);
+        let down = Terrain::new(kind(false)).settle_footfall(nosing + 0.01, 0.26, 0.015);
+        assert!((up - (nosing + 0.015)).abs() < 1e-9, "{up}");
+        assert!((down - (nosing + 0.045)).abs() < 1e-9, "{down}");
+        // Where the tread has no room for three clearances, as far as it has.
+        let short = Terrain::new(TerrainKind::Stairs { rise_m: 0.15, run_m: 0.3, count: 8, up: false, start_x_m: 2.0 });
+        let x = short.settle_footfall(2.31, 0.26, 0.015);
+        assert!((x - (2.3 + 0.025)).abs() < 1e-9, "{x}");
     }
 
     #[test]

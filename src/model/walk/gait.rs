@@ -6,7 +6,7 @@
 //! code forward (spec §8), and must borrow it without the [`Walker`](super::Walker) that
 //! calls the optimiser. The walker owns one and delegates to it.
 
-use crate::model::body::Side;
+use crate::model::body::{BodyDims, Side};
 use crate::model::curve::{Curve, LiveCurve};
 use crate::model::gait_curves::{CurveName, CurveSet};
 use crate::model::ik::softened_distance;
@@ -442,7 +442,49 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
     let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
     let z = line_z + (hip_line_z - line_z) * at.lateral;
     let y = plan.ground_from + at.heel_height;
-    let heel = DVec3::new(x, y, z);
+    let mut heel = DVec3::new(x, y, z);
+    let mut pitch = swing_pitch(plan, at, r, hip, heel);
+    // Below a stair's nosing the foot is held behind its riser (the heel moved back); the
+    // shank, and with it the pitch, follow the heel, so twice. The front of the foot is
+    // within a foot's length of the heel: where that cannot bind, nothing is worked out (the
+    // floor below is on every level swing, and this runs for every sample and frame).
+    let reach = r.dims.foot_length;
+    if let Some(riser) = plan.riser.filter(|h| heel.x + reach > h.front_limit_x(heel.y - reach, s)) {
+        for _ in 0..2 {
+            let over = foot_front(plan, s, pitch, &r.dims)
+                .map(|p| heel.x + p.x - riser.front_limit_x(heel.y + p.y, s))
+                .into_iter()
+                .fold(0.0_f64, f64::max);
+            if over <= 0.0 {
+                break;
+            }
+            heel.x -= over;
+            pitch = swing_pitch(plan, at, r, hip, heel);
+        }
+    }
+    // Over the ground it leaves the front of the foot is lifted (the heel raised) where it
+    // would dip into it; twice, as above.
+    if let Some(floor) = plan.toe_floor.filter(|f| heel.y - reach < f.lowest_y(heel.x - reach, s)) {
+        for _ in 0..2 {
+            let under = foot_front(plan, s, pitch, &r.dims)
+                .map(|p| floor.lowest_y(heel.x + p.x, s) - heel.y - p.y)
+                .into_iter()
+                .fold(0.0_f64, f64::max);
+            if under <= 0.0 {
+                break;
+            }
+            heel.y += under;
+            pitch = swing_pitch(plan, at, r, hip, heel);
+        }
+    }
+    let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
+    LegTarget { ankle, pitch, toe_bend: swing_toe_bend(plan, s, pitch), yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// The swing foot's pitch at `at` with its heel at `heel` ([`swing_target_at`]).
+#[inline]
+fn swing_pitch(plan: &SwingPlan, at: &SwingCurvesAt, r: &Resolved, hip: DVec3, heel: DVec3) -> f64 {
+    let s = at.s;
     let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, at.ankle_deg.to_radians(), r);
     // Just after toe-off the foot keeps its pitch, carried on briefly at the rate it left the
     // ground with ([`PITCH_CARRY_SWING_SHARE`]), and hands it to the ankle curve over the
@@ -464,12 +506,24 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
         let w = ((s - 0.8) / 0.2).clamp(0.0, 1.0);
         pitch += w * w * (3.0 - 2.0 * w) * (floor - pitch);
     }
-    let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
-    // The toes return to neutral over the first fifth of the swing, but never point below
-    // the horizontal while the foot is still pitched down: a toe tip dipping back into the
-    // ground it just left is what a literal linear return would draw.
-    let toe_bend = (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0);
-    LegTarget { ankle, pitch, toe_bend, yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+    pitch
+}
+
+/// The swing toes' bend at `s` with the foot at `pitch`: back to neutral over the first fifth
+/// of the swing, but never pointing below the horizontal while the foot is still pitched
+/// down: a toe tip dipping back into the ground it just left is what a literal linear return
+/// would draw.
+fn swing_toe_bend(plan: &SwingPlan, s: f64, pitch: f64) -> f64 {
+    (plan.toe_bend_from * (1.0 - s / 0.2).max(0.0)).max(-pitch).max(0.0)
+}
+
+/// The ball and the toe tip of a swing foot at `pitch` from its heel (m, sagittal x and y):
+/// the front of the foot, which meets a riser first.
+fn foot_front(plan: &SwingPlan, s: f64, pitch: f64, dims: &BodyDims) -> [DVec3; 2] {
+    let foot = foot_rotation(plan.to.yaw, pitch);
+    let ball = foot * (dims.ball_local() - dims.heel_local());
+    let toes = foot * DQuat::from_rotation_z(swing_toe_bend(plan, s, pitch));
+    [ball, ball + toes * DVec3::new(dims.toe_length(), 0.0, 0.0)]
 }
 
 /// The shank's sagittal angle (rad, from straight down, its lower end forward +) of a

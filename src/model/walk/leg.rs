@@ -103,7 +103,62 @@ pub struct SwingPlan {
     pub(crate) heel_height: Curve,
     /// Heel-height raises the 50-sample simulation made (count).
     pub raises: u32,
+    /// The stair riser just ahead of the toe at toe-off, which the toe is held behind until it
+    /// has risen past the nosing.
+    pub(crate) riser: Option<RiserAhead>,
+    /// The level ground the toe leaves, which the front of the foot stays on or above.
+    pub(crate) toe_floor: Option<ToeFloor>,
 }
+
+/// A stair riser just ahead of a swing foot's toe at toe-off (stairs up). The swing's heel
+/// path and the foot's pitch hand-over are planned for open ground; on the treads, left to
+/// them, the toe moved 3 cm forward and 5 cm up in the first swing frame, 9.5 cm into the
+/// riser a finger's width ahead. A foot lifts clear of a step before it moves over it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct RiserAhead {
+    /// Furthest forward the front of the foot may be while it is below the nosing (m).
+    pub(crate) hold_x: f64,
+    /// The nosing's height (m).
+    pub(crate) nosing_y: f64,
+}
+
+impl RiserAhead {
+    /// Furthest forward the front of the foot may be at height `y` and swing fraction `s` (m):
+    /// `hold_x` below the nosing, 20 times as far again as it is above it (the toe passes
+    /// over the nosing, and a foot landing on the tread at the nosing's height is let go), and
+    /// let go over the swing from [`RISER_HOLD_SWING_SHARE`] on. The swing simulation raises
+    /// the heel where the hold binds from 8 % of the swing on, so the toe is up before then.
+    #[must_use]
+    pub(crate) fn front_limit_x(&self, y: f64, s: f64) -> f64 {
+        self.hold_x + 20.0 * (y - self.nosing_y).max(0.0) + (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+    }
+}
+
+/// The level ground a swing's toe leaves (flat ground, a tread). As the heel, rising at
+/// toe-off, is taken over by the swing's heel-height curve, the front of the foot dipped up to
+/// 5 mm back into it in the first swing frames (stairs down at 0.9-1.1 m/s, a start's first
+/// swing 0.4 mm): a toe drags along the ground it leaves, never through it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ToeFloor {
+    /// The ground's height (m).
+    pub(crate) y: f64,
+    /// Where it ends ahead of the toe, a nosing or where a slope begins (m).
+    pub(crate) until_x: f64,
+}
+
+impl ToeFloor {
+    /// The lowest the front of the foot may be at `x` and swing fraction `s` (m): the
+    /// ground's height up to `until_x`, falling away at 45° past it, and let go over the
+    /// swing from [`RISER_HOLD_SWING_SHARE`] on, as the riser hold is.
+    #[must_use]
+    pub(crate) fn lowest_y(&self, x: f64, s: f64) -> f64 {
+        self.y - (x - self.until_x).max(0.0) - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+    }
+}
+
+/// From what share of the swing on a toe held behind the riser ahead ([`RiserAhead`]) is let
+/// go, and the floor under a toe leaving level ground ([`ToeFloor`]) falls away.
+pub(crate) const RISER_HOLD_SWING_SHARE: f64 = 0.35;
 
 impl SwingPlan {
     /// The heel's forward progress at swing fraction `s`: the forward curve at `s` moved

@@ -28,6 +28,7 @@ mod reach_guard;
 mod stance_rise;
 mod start;
 pub mod step_problem;
+mod swing_sim;
 pub mod timing;
 pub mod upper;
 

@@ -12,15 +12,14 @@ use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
 use crate::model::search::Candidate;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SwingCurvesAt, shank_angle, swing_target_at};
-use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, LegTarget, SwingPlan};
+use crate::model::walk::gait::{MIN_STRIKE_ANGLE, shank_angle};
+use crate::model::walk::leg::{Footfall, LegPhase, LegPose, LegState, SwingPlan};
 use crate::model::walk::pace::LEVEL_M;
 use crate::model::walk::pace_state::StepKind;
 use crate::model::walk::pelvis::{KeyKind, PelvisKey};
-use crate::model::walk::pose::solve_leg;
 use crate::model::walk::step_problem::{StepProblem, StepRecord};
 use crate::model::walk::timing::FramePart;
-use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, SWING_SAMPLES, StepPlan, Walker};
+use crate::model::walk::{LANDING_SLOPE_M, SWING_HEEL_DESIGN_M, StepPlan, Walker};
 use glam::DVec3;
 
 /// How much lower (a share of the fixed rule's cost) a searched double support must be to
@@ -78,17 +77,7 @@ impl Walker {
         // Swing planning step 1: the ankle curve, the foot angle it strikes at under the pelvis.
         let strike_hip = self.pelvis_at(strike_phase).hip(side.sign());
         let (ankle_deg, strike_angle) = self.adapt_swing_ankle(toe_off_pose, &to, strike_hip);
-        let landing = LegState {
-            cycle_start: strike_phase,
-            footfall: to,
-            anchor: to.heel,
-            strike_angle,
-            phase: LegPhase::LoadingResponse,
-            swing: None,
-            phase_serial: 0,
-            pose: *toe_off_pose,
-            ..self.legs[i].clone()
-        };
+        let landing = self.landing_state(side, to, strike_phase, strike_angle, toe_off_pose);
         // Step 2: the heel-height curve (the closing step's lowered: `swing_lift`).
         let ground_from = self.legs[i].footfall.heel.y;
         let lift = self.swing_lift(kind, &self.legs[i].footfall, &to, toe_off_pose.heel.x);
@@ -105,6 +94,8 @@ impl Walker {
             ankle_deg,
             heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to, lift),
             raises: 0,
+            riser: self.riser_ahead(toe_off_pose, ground_from),
+            toe_floor: self.toe_floor(toe_off_pose),
         };
         // The end of the swing and the stance phases this plan sets up must reach: lower the
         // pelvis where they would not. Twice: first with the double support at the fixed rule,
@@ -141,6 +132,29 @@ impl Walker {
         self.legs[i].swing = Some(plan);
         self.step_planned(kind, &to);
         self.lap(FramePart::SwingPlanning);
+    }
+
+    /// `side`'s leg as it will be at heel strike on `to` (cycle phase `strike_phase`), its
+    /// foot at `strike_angle`: what the double-support choice plans the loading response from.
+    fn landing_state(
+        &self,
+        side: Side,
+        to: Footfall,
+        strike_phase: f64,
+        strike_angle: f64,
+        toe_off_pose: &LegPose,
+    ) -> LegState {
+        LegState {
+            cycle_start: strike_phase,
+            footfall: to,
+            anchor: to.heel,
+            strike_angle,
+            phase: LegPhase::LoadingResponse,
+            swing: None,
+            phase_serial: 0,
+            pose: *toe_off_pose,
+            ..self.legs[side.index()].clone()
+        }
     }
 
     /// How fast `side`'s stance foot pitches into its toe-off (rad per unit of the coming
@@ -408,113 +422,6 @@ impl Walker {
         self.last_problem = Some(problem);
         record
     }
-
-    /// The 50-sample swing simulation [6.3.2]: at each sample, the pelvis pose, the heel from
-    /// the plan, IK; raise the heel-height curve where the ankle is beyond reach, then where
-    /// heel, toe tip or sole would come within the clearance of the ground. Up to eight passes;
-    /// the foot's first 8 % are left alone, as its toe is on the ground at toe-off by design.
-    fn simulate_swing(&self, side: Side, toe_off_phase: f64, plan: &mut SwingPlan) {
-        let r = &self.gait.r;
-        let dims = &r.dims;
-        let limit = r.reach_margin * dims.leg_reach();
-        let span = 1.0 - r.toe_off;
-        let sample_s = |i: usize| (i as f64 + 0.5) / SWING_SAMPLES as f64;
-        // A pass changes only the heel-height and ankle curves, and a raise moves one only
-        // near the sample that asked: the pelvis is the same in every pass, and a sample whose
-        // heel height and ankle came out bit for bit as before has the same target and pose as
-        // before (on the default walk about four passes ran, each solving all fifty samples
-        // again).
-        let hips: [DVec3; SWING_SAMPLES] =
-            std::array::from_fn(|i| self.pelvis_at(toe_off_phase + sample_s(i) * span).hip(side.sign()));
-        // Only those two are raised: the other curves' values at each sample hold.
-        let curves: [SwingCurvesAt; SWING_SAMPLES] = std::array::from_fn(|i| SwingCurvesAt::of(plan, sample_s(i)));
-        let mut solved: [Option<SolvedSample>; SWING_SAMPLES] = [None; SWING_SAMPLES];
-        // Until a pass raises the ankle curve, the values read at the start are its values.
-        let mut ankle_raised = false;
-        for _pass in 0..8 {
-            let mut raised = false;
-            let mut prev_toe_x = plan.heel_from.x + dims.foot_length;
-            for i in 0..SWING_SAMPLES {
-                let s = sample_s(i);
-                let hip = hips[i];
-                let heel_height = plan.heel_height.eval(s);
-                let ankle_deg = if ankle_raised { plan.ankle_deg.eval(s) } else { curves[i].ankle_deg };
-                let same = |m: &SolvedSample| (m.heel_height, m.ankle_deg) == (heel_height, ankle_deg);
-                let sample = match solved[i] {
-                    Some(sample) if same(&sample) => sample,
-                    _ => {
-                        let at = SwingCurvesAt { heel_height, ankle_deg, ..curves[i] };
-                        let target = swing_target_at(plan, &at, side, r, hip);
-                        SolvedSample { heel_height, ankle_deg, target, pose: None }
-                    }
-                };
-                solved[i] = Some(sample);
-                let target = sample.target;
-                // Out of reach: lift the heel until the ankle is back inside the sphere.
-                let d = hip - target.ankle;
-                let horizontal = (d.x * d.x + d.z * d.z).sqrt();
-                if horizontal < limit {
-                    let lowest_ok = hip.y - (limit * limit - horizontal * horizontal).sqrt();
-                    if target.ankle.y < lowest_ok - 1e-6 && s < 0.97 {
-                        plan.heel_height.raise_at(s, lowest_ok - target.ankle.y + 1e-4);
-                        plan.raises += 1;
-                        raised = true;
-                        continue;
-                    }
-                }
-                // Too close to the ground: clearance ramps in over the first 15 % of the swing
-                // and out over its end, where the foot leaves and meets the ground.
-                let pose = sample.pose.unwrap_or_else(|| solve_leg(r, hip, target));
-                solved[i] = Some(SolvedSample { pose: Some(pose), ..sample });
-                let ramp = |landing: f64| r.clearance * (s / 0.15).min((1.0 - s) / landing).min(1.0);
-                let needed = (ramp(0.15), ramp(TOE_LANDING_RAMP));
-                let ground_toe = self.terrain.max_height_between(prev_toe_x, pose.toe_tip.x);
-                prev_toe_x = pose.toe_tip.x;
-                let (heel_deficit, toe_deficit) = self.clearance_deficits(&pose, ground_toe, needed);
-                // A toe too close to the ground is lifted by the ankle first.
-                if toe_deficit.0 > heel_deficit.max(1e-5)
-                    && s > 0.08
-                    && s < 0.985
-                    && lift_toe(plan, s, ankle_deg, toe_deficit)
-                {
-                    (raised, ankle_raised) = (true, true);
-                    continue;
-                }
-                let deficit = heel_deficit.max(toe_deficit.0);
-                if deficit > 1e-5 && s > 0.08 && s < 0.985 {
-                    plan.heel_height.raise_at(s, deficit + 1e-4);
-                    plan.raises += 1;
-                    raised = true;
-                }
-            }
-            if !raised {
-                break;
-            }
-        }
-    }
-
-    /// How far a swing foot in `pose` is below its clearance (m): the heel's, then the toe's
-    /// or sole's (over the ground up to `ground_toe` and any terrain corner under the foot)
-    /// with how far ahead of the heel that point is, the lever a dorsiflexion lifts it with.
-    /// `needed` is the heel's and a corner's clearance, `toe_needed` the toe's over the ground.
-    fn clearance_deficits(
-        &self,
-        pose: &LegPose,
-        ground_toe: f64,
-        (needed, toe_needed): (f64, f64),
-    ) -> (f64, (f64, f64)) {
-        let heel_deficit = self.terrain.height(pose.heel.x) + needed - pose.heel.y;
-        let mut toe_deficit = (ground_toe + toe_needed - pose.toe_tip.y, pose.toe_tip.x - pose.heel.x);
-        for corner in self.terrain.corners_between(pose.heel.x, pose.toe_tip.x) {
-            let top = self.terrain.height(corner).max(self.terrain.height(corner - 1e-9));
-            let f = (corner - pose.heel.x) / (pose.toe_tip.x - pose.heel.x).max(1e-9);
-            let sole_y = pose.heel.y + (pose.toe_tip.y - pose.heel.y) * f;
-            if top + needed - sole_y > toe_deficit.0 {
-                toe_deficit = (top + needed - sole_y, corner - pose.heel.x);
-            }
-        }
-        (heel_deficit, toe_deficit)
-    }
 }
 
 /// Whether a step from ground at height `ground_from` lands on `to` at the same height (within
@@ -544,47 +451,6 @@ fn limit_push_off_after_toe_off(ankle_deg: &mut Curve, toe_off_deg: f64) {
     if lowest < floor {
         ankle_deg.raise_at(x, floor - lowest);
     }
-}
-
-/// Raises `plan`'s ankle curve at swing fraction `s` (where the ankle is at `ankle_deg`) by
-/// the dorsiflexion that lifts a toe `deficit.0` m short of its clearance, `deficit.1` m ahead
-/// of the heel, as the tibialis anterior does in mid-swing, up to [`SWING_DORSI_MAX_DEG`]:
-/// lifting the heel instead bends the knee and tips the foot further down. False when the
-/// ankle has no room left.
-fn lift_toe(plan: &mut SwingPlan, s: f64, ankle_deg: f64, (deficit, lever): (f64, f64)) -> bool {
-    let room_deg = SWING_DORSI_MAX_DEG - ankle_deg;
-    if room_deg <= 0.05 {
-        return false;
-    }
-    let wanted_deg = (deficit / lever.max(0.05)).min(1.0).asin().to_degrees() + 0.05;
-    plan.ankle_deg.raise_at(s, wanted_deg.min(room_deg));
-    plan.raises += 1;
-    true
-}
-
-/// Share of the swing's end over which the toe's clearance above the ground ramps out (the
-/// heel's and a stair nosing's ramp out over the last 0.15). The toe needs its full clearance
-/// at mid-swing, where the foot passes lowest, not just before the heel lands: held to it
-/// until 0.85 of the swing, a short step whose foot ends pitched toward rising ground (the
-/// closing step of a stop on slope_up) kept its heel 10-15 cm up and dropped it in the last
-/// five frames, the knee extending 9°/frame against the steady walk's 6.6 at the fastest.
-const TOE_LANDING_RAMP: f64 = 0.35;
-
-/// Most dorsiflexion (deg) the swing simulation asks of the ankle, where a toe needs lifting,
-/// before it lifts the heel instead: the normative swing ankle peaks at 5.6 ± 2.0 deg at 86 %
-/// of the cycle (data/normative/), gaitlab's swing-ankle curve at 5.7. A raise moves a knot of
-/// the curve, which carries the samples beside it further: the default walk's adapted curve
-/// peaks at 8.2 deg (the norms' mean + 1.3 SD).
-const SWING_DORSI_MAX_DEG: f64 = 7.0;
-
-/// One sample of the swing simulation as a pass left it: the heel height and ankle it was
-/// solved at, its target, and its leg pose once solved (a sample lifted for reach is not).
-#[derive(Clone, Copy)]
-struct SolvedSample {
-    heel_height: f64,
-    ankle_deg: f64,
-    target: LegTarget,
-    pose: Option<LegPose>,
 }
 
 #[cfg(test)]
