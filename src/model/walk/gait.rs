@@ -13,7 +13,7 @@ use crate::model::ik::softened_distance;
 use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::leg::{Footfall, LegPhase, LegState, LegTarget, SwingPlan, foot_rotation};
+use crate::model::walk::leg::{Footfall, LegPhase, LegState, LegTarget, SwingPlan, foot_rotation, led_fraction};
 use crate::model::walk::pelvis::{PelvisPlan, PelvisPose, TrajectoryCurves};
 use glam::{DQuat, DVec3};
 
@@ -464,7 +464,8 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
     }
     // Over the ground it leaves the front of the foot is lifted (the heel raised) where it
     // would dip into it; twice, as above.
-    if let Some(floor) = plan.toe_floor.filter(|f| heel.y - reach < f.lowest_y(heel.x - reach, s)) {
+    let floor = plan.toe_floor;
+    if heel.y - reach < floor.highest_between(heel.x - reach, heel.x + reach, s) {
         for _ in 0..2 {
             let under = foot_front(plan, s, pitch, &r.dims)
                 .map(|p| floor.lowest_y(heel.x + p.x, s) - heel.y - p.y)
@@ -484,17 +485,19 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
 /// The swing foot's pitch at `at` with its heel at `heel` ([`swing_target_at`]).
 #[inline]
 fn swing_pitch(plan: &SwingPlan, at: &SwingCurvesAt, r: &Resolved, hip: DVec3, heel: DVec3) -> f64 {
-    let s = at.s;
+    // A lagging swing (a riser ahead, [`SwingPlan::lead`] below 0) hands the pitch over on its
+    // heel's clock: flattening at once swung the toe 6 cm forward about the heel.
+    let (s, hand_over_s) = (at.s, if plan.lead < 0.0 { led_fraction(at.s, plan.lead) } else { at.s });
     let mut pitch = foot_pitch_for_ankle(hip, heel, plan.to.yaw, at.ankle_deg.to_radians(), r);
     // Just after toe-off the foot keeps its pitch, carried on briefly at the rate it left the
     // ground with ([`PITCH_CARRY_SWING_SHARE`]), and hands it to the ankle curve over the
     // first 15 % of the swing. Hung from the shank at once, a leg still stretched from the
     // push-off feeds on itself: the hip runs ahead, the shank leans, the steeper foot drops
     // the ankle further from the hip (on stairs up the knee locked out of reach).
-    if s < 0.15 {
-        let w = s / 0.15;
+    if hand_over_s < 0.15 {
+        let w = hand_over_s / 0.15;
         let carried = plan.pitch_from
-            + plan.pitch_rate_from * PITCH_CARRY_SWING_SHARE * (1.0 - (-s / PITCH_CARRY_SWING_SHARE).exp());
+            + plan.pitch_rate_from * PITCH_CARRY_SWING_SHARE * (1.0 - (-hand_over_s / PITCH_CARRY_SWING_SHARE).exp());
         pitch = carried + w * w * (3.0 - 2.0 * w) * (pitch - carried);
     }
     // The heel must land first even where the pelvis ends up lower or further back than the
@@ -519,11 +522,20 @@ fn swing_toe_bend(plan: &SwingPlan, s: f64, pitch: f64) -> f64 {
 
 /// The ball and the toe tip of a swing foot at `pitch` from its heel (m, sagittal x and y):
 /// the front of the foot, which meets a riser first.
+///
+/// In the plane, not by quaternions: the foot's rotation is its yaw's about the vertical
+/// after its pitch's about z (`foot_rotation`), and the toes' bend is about the same z, so
+/// the ball is `(heel→ball) · (cos pitch · cos yaw, sin pitch)` and the toe segment the same at
+/// `pitch + bend` (the swing target runs this for every early sample on stairs; two
+/// quaternions a call cost the stairs_up step's planning a tenth of its budget).
 fn foot_front(plan: &SwingPlan, s: f64, pitch: f64, dims: &BodyDims) -> [DVec3; 2] {
-    let foot = foot_rotation(plan.to.yaw, pitch);
-    let ball = foot * (dims.ball_local() - dims.heel_local());
-    let toes = foot * DQuat::from_rotation_z(swing_toe_bend(plan, s, pitch));
-    [ball, ball + toes * DVec3::new(dims.toe_length(), 0.0, 0.0)]
+    let cos_yaw = plan.to.yaw.cos();
+    let along = |length: f64, angle: f64| {
+        let (sin, cos) = angle.sin_cos();
+        DVec3::new(length * cos * cos_yaw, length * sin, 0.0)
+    };
+    let ball = along((dims.ball_local() - dims.heel_local()).x, pitch);
+    [ball, ball + along(dims.toe_length(), pitch + swing_toe_bend(plan, s, pitch))]
 }
 
 /// The shank's sagittal angle (rad, from straight down, its lower end forward +) of a

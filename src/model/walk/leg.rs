@@ -92,7 +92,8 @@ pub struct SwingPlan {
     /// Heel progress 0→1 toward the footfall.
     pub forward: Curve,
     /// How far ahead of the design curve the heel moves forward, frozen when the step is
-    /// planned ([`SwingPlan::progress`]; the speed law `swing_lead`).
+    /// planned ([`SwingPlan::progress`]; the speed law `swing_lead`); below 0 (a lag) with a
+    /// riser just ahead of the toe, when the foot's pitch is handed over on the same clock.
     pub(crate) lead: f64,
     /// Weight toward the hip line.
     pub lateral: Curve,
@@ -106,14 +107,16 @@ pub struct SwingPlan {
     /// The stair riser just ahead of the toe at toe-off, which the toe is held behind until it
     /// has risen past the nosing.
     pub(crate) riser: Option<RiserAhead>,
-    /// The level ground the toe leaves, which the front of the foot stays on or above.
-    pub(crate) toe_floor: Option<ToeFloor>,
+    /// The ground the toe leaves, which the front of the foot stays on or above.
+    pub(crate) toe_floor: ToeFloor,
 }
 
 /// A stair riser just ahead of a swing foot's toe at toe-off (stairs up). The swing's heel
 /// path and the foot's pitch hand-over are planned for open ground; on the treads, left to
 /// them, the toe moved 3 cm forward and 5 cm up in the first swing frame, 9.5 cm into the
-/// riser a finger's width ahead. A foot lifts clear of a step before it moves over it.
+/// riser a finger's width ahead. A foot lifts clear of a step before it moves over it: such a
+/// swing lags (its [`SwingPlan::lead`] below 0, the planner's `RISER_LEAD`), and the swing
+/// target holds what is left of the front of the foot behind the riser.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct RiserAhead {
     /// Furthest forward the front of the foot may be while it is below the nosing (m).
@@ -124,40 +127,59 @@ pub(crate) struct RiserAhead {
 
 impl RiserAhead {
     /// Furthest forward the front of the foot may be at height `y` and swing fraction `s` (m):
-    /// `hold_x` below the nosing, 20 times as far again as it is above it (the toe passes
-    /// over the nosing, and a foot landing on the tread at the nosing's height is let go), and
-    /// let go over the swing from [`RISER_HOLD_SWING_SHARE`] on. The swing simulation raises
-    /// the heel where the hold binds from 8 % of the swing on, so the toe is up before then.
+    /// `hold_x` below the nosing, twice as far again as it is above it, and let go over the
+    /// swing from [`RISER_HOLD_SWING_SHARE`] on (a foot landing on the tread at the nosing's
+    /// height). The swing simulation raises the heel where the hold binds from 8 % of the
+    /// swing on. A steep let-go (20 times) paid a held toe's debt back in one frame.
     #[must_use]
     pub(crate) fn front_limit_x(&self, y: f64, s: f64) -> f64 {
-        self.hold_x + 20.0 * (y - self.nosing_y).max(0.0) + (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+        self.hold_x + 2.0 * (y - self.nosing_y).max(0.0) + (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
     }
 }
 
-/// The level ground a swing's toe leaves (flat ground, a tread). As the heel, rising at
-/// toe-off, is taken over by the swing's heel-height curve, the front of the foot dipped up to
-/// 5 mm back into it in the first swing frames (stairs down at 0.9-1.1 m/s, a start's first
-/// swing 0.4 mm): a toe drags along the ground it leaves, never through it.
+/// The ground a swing's toe leaves, up to its next corner (flat ground, a tread, a slope, a
+/// piece of rough ground). As the heel, rising at toe-off, is taken over by the swing's
+/// heel-height curve, the front of the foot dipped 0.6-1.2 mm back into it in the first swing
+/// frames (stairs down at 0.9-1.1 m/s; a start's first swing 0.4 mm; rough ground 1.1 mm at
+/// 240 frames a second): a toe drags along the ground it leaves, never through it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ToeFloor {
-    /// The ground's height (m).
+    /// The toe tip's x at toe-off (m).
+    pub(crate) x: f64,
+    /// The ground's height there (m).
     pub(crate) y: f64,
-    /// Where it ends ahead of the toe, a nosing or where a slope begins (m).
+    /// The ground's slope up to `until_x` (rise over run).
+    pub(crate) slope: f64,
+    /// Where that piece of ground ends ahead of the toe: a nosing, a slope's start, a vertex
+    /// of rough ground (m).
     pub(crate) until_x: f64,
 }
 
 impl ToeFloor {
     /// The lowest the front of the foot may be at `x` and swing fraction `s` (m): the
-    /// ground's height up to `until_x`, falling away at 45° past it, and let go over the
+    /// ground's line up to `until_x`, falling away at 45° past it, and let go over the
     /// swing from [`RISER_HOLD_SWING_SHARE`] on, as the riser hold is.
     #[must_use]
     pub(crate) fn lowest_y(&self, x: f64, s: f64) -> f64 {
-        self.y - (x - self.until_x).max(0.0) - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+        self.y + self.slope * (x.min(self.until_x) - self.x)
+            - (x - self.until_x).max(0.0)
+            - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+    }
+
+    /// The highest [`Self::lowest_y`] between `x0` and `x1` (`x0 <= x1`): at an end or at
+    /// `until_x`, as it is a line up to there and falls after.
+    #[must_use]
+    pub(crate) fn highest_between(&self, x0: f64, x1: f64, s: f64) -> f64 {
+        let mut y = self.lowest_y(x0, s).max(self.lowest_y(x1, s));
+        if (x0..=x1).contains(&self.until_x) {
+            y = y.max(self.lowest_y(self.until_x, s));
+        }
+        y
     }
 }
 
 /// From what share of the swing on a toe held behind the riser ahead ([`RiserAhead`]) is let
-/// go, and the floor under a toe leaving level ground ([`ToeFloor`]) falls away.
+/// go, and the floor under a toe leaving the ground ([`ToeFloor`]) falls away.
 pub(crate) const RISER_HOLD_SWING_SHARE: f64 = 0.35;
 
 impl SwingPlan {

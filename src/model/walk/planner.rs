@@ -81,6 +81,7 @@ impl Walker {
         // Step 2: the heel-height curve (the closing step's lowered: `swing_lift`).
         let ground_from = self.legs[i].footfall.heel.y;
         let lift = self.swing_lift(kind, &self.legs[i].footfall, &to, toe_off_pose.heel.x);
+        let riser = self.riser_ahead(toe_off_pose, ground_from, &to);
         let mut plan = SwingPlan {
             heel_from: toe_off_pose.heel,
             ground_from,
@@ -89,12 +90,12 @@ impl Walker {
             pitch_from: toe_off_pose.target.pitch,
             pitch_rate_from: self.toe_off_pitch_rate(side, kind, toe_off_pose, &to),
             forward: self.gait.design.get(CurveName::SwingForward).clone(),
-            lead: self.swing_lead(ground_from, &to),
+            lead: self.swing_lead(ground_from, &to, riser.is_some()),
             lateral: self.gait.design.get(CurveName::SwingLateral).clone(),
             ankle_deg,
             heel_height: self.adapt_swing_heel(toe_off_pose.heel.y, ground_from, &to, lift),
             raises: 0,
-            riser: self.riser_ahead(toe_off_pose, ground_from),
+            riser,
             toe_floor: self.toe_floor(toe_off_pose),
         };
         // The end of the swing and the stance phases this plan sets up must reach: lower the
@@ -181,9 +182,16 @@ impl Walker {
 
     /// The swing heel's lead ahead of the forward design curve (the speed law `swing_lead`),
     /// on level steps only: onto a stair or down a slope a heel brought forward sooner met a
-    /// nosing before the swing simulation saw it (stairs_down at 0.5 m/s).
-    fn swing_lead(&self, ground_from: f64, to: &Footfall) -> f64 {
-        if level_step(ground_from, to) { self.gait.r.swing_lead } else { 0.0 }
+    /// nosing before the swing simulation saw it (stairs_down at 0.5 m/s); a lag
+    /// ([`RISER_LEAD`]) with a riser just ahead of the toe.
+    fn swing_lead(&self, ground_from: f64, to: &Footfall, riser_ahead: bool) -> f64 {
+        if riser_ahead {
+            RISER_LEAD
+        } else if level_step(ground_from, to) {
+            self.gait.r.swing_lead
+        } else {
+            0.0
+        }
     }
 
     /// The step's ankle curve and the foot–ground angle it strikes `to` at with the hip at
@@ -423,6 +431,16 @@ impl Walker {
         record
     }
 }
+
+/// The swing heel's lead on a step with a riser just ahead of its toe (a lag): its progress
+/// toward the footfall at swing fraction `s` is the design curve's at `s − 0.7 · s · (1 − s)`
+/// (0.03 at 8 % of the swing, 0.15 at 30 %), and the foot's pitch is handed over on the same
+/// clock, so the foot goes up before it goes forward. Held behind the riser by the swing target
+/// alone, the toe built up a debt of up to 5 cm, paid back in one frame as it passed the nosing
+/// (the heel 10-18 cm in a frame, the knee straight for a frame at 2.0 m/s; a reviewer's find).
+/// At 0.6 a 20 cm riser at 1.5 m/s still paid 3 cm back in a frame; at 0.8 the heel's late
+/// catch-up lengthened single frames' steps more than the hold had (docs/gait-model.md §12).
+const RISER_LEAD: f64 = -0.7;
 
 /// Whether a step from ground at height `ground_from` lands on `to` at the same height (within
 /// [`LEVEL_M`]): the swing's early heel and its carried toe-off pitch are for such steps only.
