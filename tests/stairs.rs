@@ -105,11 +105,11 @@ fn a_swinging_toe_under_the_ground_is_counted() {
     assert_eq!(c.worst_penetration.map(|(frame, _)| frame), Some(run.frames[k].frame));
 }
 
-/// Stair walks a reviewer found still under the treads with the riser hold in the swing
-/// target alone: a riser 10-11 cm ahead of the toe at fast paces (outside the hold's first
+/// Stair walks two reviews found still under the treads (the first with the riser hold in the
+/// swing target alone): a riser 10-11 cm ahead of the toe at fast paces (outside the hold's first
 /// reach), and toes cutting nosings between two swing samples late in a swing up long treads.
 /// `(sets, frames a second)`.
-const REVIEWED_FLIGHTS: [(&str, f64); 8] = [
+const REVIEWED_FLIGHTS: [(&str, f64); 10] = [
     ("terrain.count=10 walk.speed_mps=1.3", 60.0),
     ("terrain.count=10 walk.speed_mps=2.0 terrain.start_x_m=1.7", 60.0),
     ("terrain.count=6 walk.speed_mps=1.6", 240.0),
@@ -121,6 +121,16 @@ const REVIEWED_FLIGHTS: [(&str, f64); 8] = [
         60.0,
     ),
     ("terrain.count=6 terrain.rise_m=0.10 terrain.run_m=0.5 walk.speed_mps=2.0", 60.0),
+    // Down, fast, at 0.5 cm clearance: the heel landed two clearances (1 cm) past the nosing
+    // and cut it coming down, 13.6 and 28.2 mm (a second review's find).
+    (
+        "terrain.direction=down terrain.count=6 walk.speed_mps=2.0 body.height_m=1.6 legs.knee_lift_cm=0 legs.clearance_cm=0.5 terrain.rise_m=0.1 terrain.run_m=0.4",
+        60.0,
+    ),
+    (
+        "terrain.direction=down terrain.count=20 walk.speed_mps=2.0 body.height_m=1.6 legs.knee_lift_cm=0 legs.clearance_cm=0.5 terrain.rise_m=0.2 terrain.run_m=0.5",
+        60.0,
+    ),
 ];
 
 fn flight(sets: &str, fps: f64) -> gaitlab::analysis::Run {
@@ -146,7 +156,9 @@ fn the_reviewed_flights_stay_on_the_treads() {
 /// 6 mm at 240 (46-84 with the debt).
 #[test]
 fn a_foot_held_behind_a_riser_is_not_let_go_in_a_jump() {
-    for (sets, fps) in REVIEWED_FLIGHTS {
+    // Up: the hold is for risers ahead (a fast swing down a flight of long treads swings its
+    // foot 40 cm up, as it did before any hold: noted, not held here).
+    for (sets, fps) in REVIEWED_FLIGHTS.into_iter().filter(|(sets, _)| !sets.contains("direction=down")) {
         let run = flight(sets, fps);
         let (mut heel_back_mm, mut toe_jump_mm) = (0.0_f64, 0.0_f64);
         for i in 0..2 {

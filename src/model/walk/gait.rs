@@ -526,8 +526,8 @@ fn swing_toe_bend(plan: &SwingPlan, s: f64, pitch: f64) -> f64 {
 /// In the plane, not by quaternions: the foot's rotation is its yaw's about the vertical
 /// after its pitch's about z (`foot_rotation`), and the toes' bend is about the same z, so
 /// the ball is `(heel→ball) · (cos pitch · cos yaw, sin pitch)` and the toe segment the same at
-/// `pitch + bend` (the swing target runs this for every early sample on stairs; two
-/// quaternions a call cost the stairs_up step's planning a tenth of its budget).
+/// `pitch + bend` (the swing target runs this for every early sample on stairs; with two
+/// quaternions a call the stairs_up step's planning took about 4 µs more, of a 100 µs budget).
 fn foot_front(plan: &SwingPlan, s: f64, pitch: f64, dims: &BodyDims) -> [DVec3; 2] {
     let cos_yaw = plan.to.yaw.cos();
     let along = |length: f64, angle: f64| {

@@ -157,22 +157,28 @@ pub(crate) struct ToeFloor {
 
 impl ToeFloor {
     /// The lowest the front of the foot may be at `x` and swing fraction `s` (m): the
-    /// ground's line up to `until_x`, falling away at 45° past it, and let go over the
-    /// swing from [`RISER_HOLD_SWING_SHARE`] on, as the riser hold is.
+    /// ground's line up to `until_x`, falling away at 45° past it, never above the toe's
+    /// ground behind the toe (carried back up a downhill line, past a slope's start or a
+    /// rough vertex behind, it lifted the ball 13-18 mm in the first swing frame; a
+    /// reviewer's find), and let go over the swing from [`RISER_HOLD_SWING_SHARE`] on, as
+    /// the riser hold is.
     #[must_use]
     pub(crate) fn lowest_y(&self, x: f64, s: f64) -> f64 {
-        self.y + self.slope * (x.min(self.until_x) - self.x)
+        let along = self.slope * (x.min(self.until_x) - self.x);
+        self.y + if x < self.x { along.min(0.0) } else { along }
             - (x - self.until_x).max(0.0)
             - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
     }
 
-    /// The highest [`Self::lowest_y`] between `x0` and `x1` (`x0 <= x1`): at an end or at
-    /// `until_x`, as it is a line up to there and falls after.
+    /// The highest [`Self::lowest_y`] between `x0` and `x1` (`x0 <= x1`): at an end, at the
+    /// toe's x or at `until_x`, as it is a line between those.
     #[must_use]
     pub(crate) fn highest_between(&self, x0: f64, x1: f64, s: f64) -> f64 {
         let mut y = self.lowest_y(x0, s).max(self.lowest_y(x1, s));
-        if (x0..=x1).contains(&self.until_x) {
-            y = y.max(self.lowest_y(self.until_x, s));
+        for x in [self.x, self.until_x] {
+            if (x0..=x1).contains(&x) {
+                y = y.max(self.lowest_y(x, s));
+            }
         }
         y
     }

@@ -1,7 +1,7 @@
 //! The swing simulation (spec §6.3.2): once a step is planned, its swing is walked at 50
 //! samples and its heel-height and ankle curves raised where the leg cannot reach or the foot
 //! would come within the clearance of the ground; and the ground the swing starts from (a
-//! riser ahead of the toe, the level ground it leaves), which the swing target keeps the
+//! riser ahead of the toe, the piece of ground it leaves), which the swing target keeps the
 //! foot clear of between samples and frames alike.
 //!
 //! An `impl Walker` block beside the planner, which calls it once a step.
@@ -14,8 +14,9 @@ use crate::model::walk::{SWING_SAMPLES, Walker};
 use glam::DVec3;
 
 impl Walker {
-    /// The stair riser the foot leaving `toe_off_pose` has just ahead of its toe (within
-    /// [`RISER_NEAR_M`]), where its ground (`ground_from`) steps up by more than 1 cm.
+    /// The stair riser the foot leaving `toe_off_pose` for `to` has just ahead of its toe
+    /// (within [`RISER_NEAR_M`] and [`RISER_NEAR_STEP_SHARE`] of its heel's way), where its
+    /// ground (`ground_from`) steps up by more than 1 cm.
     pub(super) fn riser_ahead(&self, toe_off_pose: &LegPose, ground_from: f64, to: &Footfall) -> Option<RiserAhead> {
         let toe_x = toe_off_pose.toe_tip.x.max(toe_off_pose.ball.x);
         let t = &self.terrain;
@@ -25,8 +26,12 @@ impl Walker {
             .into_iter()
             .find(|&x| t.riser_height_at(x) > 0.01 && t.corner_top(x) > ground_from + 0.01)?;
         let nosing_y = t.corner_top(riser_x);
-        // Held back by the clearance where there is room, or where the toe left the tread.
-        Some(RiserAhead { hold_x: (riser_x - 0.5 * self.gait.r.clearance).max(toe_x), nosing_y })
+        // Held back by half the clearance where there is room, or where the toe left the
+        // tread; at least 5 mm, as exactly on the riser's x the ground reads as the tread
+        // above it (at a clearance of 0 the simulation raised a held heel 1.5 m, the leg
+        // upside down for 18 frames; a reviewer's find).
+        let gap = (0.5 * self.gait.r.clearance).max(RISER_HOLD_GAP_MIN_M);
+        Some(RiserAhead { hold_x: (riser_x - gap).max(toe_x), nosing_y })
     }
 
     /// The ground under the toe of `toe_off_pose` and where that piece of it ends ahead
@@ -215,6 +220,9 @@ impl Walker {
 /// a riser 10-11 cm ahead to the toe at 1.5-2.0 m/s (30 mm into it at 240 frames a second; a
 /// reviewer's find).
 const RISER_NEAR_M: f64 = 0.10;
+
+/// The least gap a toe is held behind a riser (m).
+const RISER_HOLD_GAP_MIN_M: f64 = 0.005;
 
 /// The share of the heel's way to its footfall added to [`RISER_NEAR_M`]: the heel's progress
 /// by 8 % of the swing is under 5 % of its way, and the foot's pitch hand-over carries the toe
