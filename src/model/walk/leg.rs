@@ -165,9 +165,8 @@ impl ToeFloor {
     #[must_use]
     pub(crate) fn lowest_y(&self, x: f64, s: f64) -> f64 {
         let along = self.slope * (x.min(self.until_x) - self.x);
-        self.y + if x < self.x { along.min(0.0) } else { along }
-            - (x - self.until_x).max(0.0)
-            - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
+        let along = if x < self.x { along.min(0.0) } else { along };
+        self.y + along - (x - self.until_x).max(0.0) - (s - RISER_HOLD_SWING_SHARE).max(0.0) * 4.0
     }
 
     /// The highest [`Self::lowest_y`] between `x0` and `x1` (`x0 <= x1`): at an end, at the
