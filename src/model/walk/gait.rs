@@ -437,49 +437,53 @@ pub fn swing_target_at(plan: &SwingPlan, at: &SwingCurvesAt, side: Side, r: &Res
     let from = plan.heel_from;
     let to = plan.to.heel;
     let progress = at.progress;
-    let x = from.x + (to.x - from.x) * progress;
+    let x = plan.planned_heel_x(progress);
     let line_z = from.z + (to.z - from.z) * progress;
     let hip_line_z = side.sign() * 0.5 * r.dims.hip_width;
     let z = line_z + (hip_line_z - line_z) * at.lateral;
     let y = plan.ground_from + at.heel_height;
     let mut heel = DVec3::new(x, y, z);
     let mut pitch = swing_pitch(plan, at, r, hip, heel);
-    // Below a stair's nosing the foot is held behind its riser (the heel moved back); the
-    // shank, and with it the pitch, follow the heel, so twice. The front of the foot is
-    // within a foot's length of the heel: where that cannot bind, nothing is worked out (the
+    // Below a stair's nosing the foot is held behind its riser (the heel moved back). The
+    // front of the foot is within a foot's length of the heel: where that cannot bind, nothing is worked out (the
     // floor below is on every level swing, and this runs for every sample and frame).
     let reach = r.dims.foot_length;
     if let Some(riser) = plan.riser.filter(|h| heel.x + reach > h.front_limit_x(heel.y - reach, s)) {
-        for _ in 0..2 {
-            let over = foot_front(plan, s, pitch, &r.dims)
-                .map(|p| heel.x + p.x - riser.front_limit_x(heel.y + p.y, s))
-                .into_iter()
-                .fold(0.0_f64, f64::max);
-            if over <= 0.0 {
-                break;
-            }
-            heel.x -= over;
-            pitch = swing_pitch(plan, at, r, hip, heel);
-        }
+        let over = |heel: DVec3, p: DVec3| heel.x + p.x - riser.front_limit_x(heel.y + p.y, s);
+        push_foot_front(plan, at, r, hip, (&mut heel, &mut pitch), DVec3::NEG_X, over);
     }
     // Over the ground it leaves the front of the foot is lifted (the heel raised) where it
-    // would dip into it; twice, as above.
+    // would dip into it.
     let floor = plan.toe_floor;
     if heel.y - reach < floor.highest_between(heel.x - reach, heel.x + reach, s) {
-        for _ in 0..2 {
-            let under = foot_front(plan, s, pitch, &r.dims)
-                .map(|p| floor.lowest_y(heel.x + p.x, s) - heel.y - p.y)
-                .into_iter()
-                .fold(0.0_f64, f64::max);
-            if under <= 0.0 {
-                break;
-            }
-            heel.y += under;
-            pitch = swing_pitch(plan, at, r, hip, heel);
-        }
+        let under = |heel: DVec3, p: DVec3| floor.lowest_y(heel.x + p.x, s) - heel.y - p.y;
+        push_foot_front(plan, at, r, hip, (&mut heel, &mut pitch), DVec3::Y, under);
     }
     let ankle = heel - foot_rotation(plan.to.yaw, pitch) * r.dims.heel_local();
     LegTarget { ankle, pitch, toe_bend: swing_toe_bend(plan, s, pitch), yaw: plan.to.yaw, extra_heel_rise: 0.0 }
+}
+
+/// Moves a swing foot's heel along `direction` by the most that the front of the foot (ball,
+/// toe tip, from the heel) is past where it may be (`excess` of the heel and that point), its pitch
+/// following the heel's new place; twice, as the shank, and with it the pitch, follow the heel.
+fn push_foot_front(
+    plan: &SwingPlan,
+    at: &SwingCurvesAt,
+    r: &Resolved,
+    hip: DVec3,
+    (heel, pitch): (&mut DVec3, &mut f64),
+    direction: DVec3,
+    excess: impl Fn(DVec3, DVec3) -> f64,
+) {
+    for _ in 0..2 {
+        let most =
+            foot_front(plan, at.s, *pitch, &r.dims).map(|p| excess(*heel, p)).into_iter().fold(0.0_f64, f64::max);
+        if most <= 0.0 {
+            break;
+        }
+        *heel += direction * most;
+        *pitch = swing_pitch(plan, at, r, hip, *heel);
+    }
 }
 
 /// The swing foot's pitch at `at` with its heel at `heel` ([`swing_target_at`]).

@@ -194,6 +194,13 @@ impl SwingPlan {
     pub fn progress(&self, s: f64) -> f64 {
         self.forward.eval(led_fraction(s, self.lead))
     }
+
+    /// Where the heel's way puts it along x at `progress` (m), before the swing target holds
+    /// it behind a riser.
+    #[must_use]
+    pub(crate) fn planned_heel_x(&self, progress: f64) -> f64 {
+        self.heel_from.x + (self.to.heel.x - self.heel_from.x) * progress
+    }
 }
 
 /// Swing fraction `s` moved ahead by `lead · s · (1 − s)`: the ends stay, and for a lead up

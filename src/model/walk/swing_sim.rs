@@ -154,8 +154,7 @@ impl Walker {
         let mut ground_toe = self.terrain.max_height_between(prev_toe.x, pose.toe_tip.x);
         // A toe held behind a riser (its heel short of the planned one) is as low over it as
         // it is under its nosing.
-        let planned_heel_x = plan.heel_from.x + (plan.to.heel.x - plan.heel_from.x) * progress;
-        if let Some(riser) = plan.riser.filter(|_| pose.heel.x < planned_heel_x - 1e-5) {
+        if let Some(riser) = plan.riser.filter(|_| pose.heel.x < plan.planned_heel_x(progress) - 1e-5) {
             ground_toe = ground_toe.max(riser.nosing_y);
         }
         let (heel_deficit, toe_deficit) = self.clearance_deficits(pose, ground_toe, needed);
