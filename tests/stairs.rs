@@ -191,3 +191,32 @@ fn a_swing_toe_does_not_dip_into_rough_ground() {
         assert!(c.terrain_penetration_mm < 0.01 && c.reach_failures == 0, "{text}: {c:?}");
     }
 }
+
+/// `legs.clearance_cm = 0` is a valid setting, and the walk keeps 2 mm all the same
+/// (`params::LEAST_CLEARANCE_M`). At none, up 20 tall treads a planted toe stood on the riser's
+/// plane (200 mm under the upper tread by the checks) and the swing simulation lifted a heel
+/// 1.5 m (18 reach failures); down a flight at 0-0.5 cm a heel landing 1 cm past a nosing was
+/// thrown up to 75 cm over the tread, the hip flexing 60° in a frame, and came down through
+/// the nosing (43 and 114 mm under it).
+#[test]
+fn a_clearance_of_none_walks_the_stairs_as_a_small_one() {
+    let flights = [
+        "terrain.count=20 terrain.rise_m=0.2 terrain.run_m=0.31 walk.speed_mps=0.4 body.height_m=1.5 legs.clearance_cm=0 legs.knee_lift_cm=2",
+        "terrain.direction=down terrain.count=10 terrain.rise_m=0.15 terrain.run_m=0.31 walk.speed_mps=2.0 legs.clearance_cm=0.2 legs.knee_lift_cm=2",
+        "terrain.direction=down terrain.count=10 terrain.rise_m=0.15 terrain.run_m=0.31 walk.speed_mps=1.5 body.height_m=1.9 legs.clearance_cm=0 legs.knee_lift_cm=0",
+    ];
+    for sets in flights {
+        let run = flight(sets, 60.0);
+        let c = checks(&run.frames);
+        assert!(c.terrain_penetration_mm < 0.05 && c.reach_failures == 0, "{sets}: {c:?}");
+        let mut hip_step_deg = 0.0_f64;
+        for i in 0..2 {
+            for k in 1..run.frames.len() {
+                let step = run.frames[k].legs[i].hip_flex_deg - run.frames[k - 1].legs[i].hip_flex_deg;
+                hip_step_deg = hip_step_deg.max(step.abs());
+            }
+        }
+        // 14-19° a frame at 60 fps over these flights (55-62 thrown).
+        assert!(hip_step_deg < 25.0, "{sets}: the hip flexed {hip_step_deg:.1}° in a frame");
+    }
+}

@@ -13,7 +13,7 @@ use crate::model::speed_laws::{
     WALK_RATIO_PER_175, double_support_key_share, heel_rise_phase, midstance_drop_cm, midstance_offset_cm,
     obliquity_range_deg, stance_rise, swing_lead, vertical_range_cm,
 };
-use crate::model::terrain::TerrainKind;
+use crate::model::terrain::{LEAST_CLEARANCE_M, TerrainKind};
 use std::collections::BTreeMap;
 
 /// Default extra heel rise past the curve (deg) that a candidate may ask of a stance leg
@@ -468,7 +468,7 @@ pub struct Resolved {
     pub turnout: f64,
     /// Extra heel height in mid-swing (m).
     pub(crate) knee_lift: f64,
-    /// Clearance the swing planner keeps over terrain corners (m).
+    /// Clearance the swing planner keeps over terrain corners (m), at least [`LEAST_CLEARANCE_M`].
     pub clearance: f64,
     /// Peak-to-peak shoulder flexion (rad).
     pub(crate) shoulder_range: f64,
@@ -586,7 +586,7 @@ impl WalkParams {
             rest_tilt: deg(p.rest_tilt_deg),
             turnout: deg(self.legs.turnout_deg),
             knee_lift: self.legs.knee_lift_cm / 100.0,
-            clearance: self.legs.clearance_cm / 100.0,
+            clearance: (self.legs.clearance_cm / 100.0).max(LEAST_CLEARANCE_M),
             shoulder_range: deg(a.shoulder_range_deg.unwrap_or((25.0 + 30.0 * fast).max(4.0))),
             elbow_range: deg(a.elbow_range_deg.unwrap_or((15.0 + 20.0 * fast).max(2.0))),
             elbow_min_flex: deg(a.elbow_min_flex_deg),

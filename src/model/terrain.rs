@@ -239,11 +239,24 @@ impl Terrain {
             return heel_x;
         };
         let last_nosing = start_x_m + (*count as f64 - 1.0) * run_m;
-        let crosses = |x: f64| {
-            self.corners_between(x - margin_m, x + foot_m + margin_m)
-                .iter()
-                .any(|&c| c > x - margin_m && c < x + foot_m + margin_m)
+        // Down a flight the heel lands further onto the tread where it fits: it comes down
+        // past the nosing and needs room to (15 cm in the last 1.5 cm of its way). A step
+        // whose own place is nearer the nosing than that moves too: at a clearance of 2 mm
+        // the nominal heel landed 1 cm past a nosing and the swing simulation, lifting the
+        // heel over the corner pass after pass, threw the foot 75 cm up and back down through
+        // the nosing (43 mm under it at 2.0 m/s).
+        let heel_past_nosing = if *up {
+            margin_m
+        } else {
+            (2.0 * margin_m).max(DOWN_HEEL_PAST_MIN_M).min(run_m - foot_m - margin_m).max(margin_m)
         };
+        let crosses_with = |x: f64, behind: f64| {
+            // A corner exactly at the edge does not cross (a candidate is set there).
+            self.corners_between(x - behind, x + foot_m + margin_m)
+                .iter()
+                .any(|&c| c > x - behind + EDGE_M && c < x + foot_m + margin_m - EDGE_M)
+        };
+        let crosses = |x: f64| crosses_with(x, heel_past_nosing);
         if !crosses(heel_x) {
             return heel_x;
         }
@@ -252,19 +265,14 @@ impl Terrain {
         let mut best_d = f64::INFINITY;
         for i in -1..=(*count as i64) {
             let nosing = start_x_m + i as f64 * run_m;
-            // Down a flight the heel lands further onto the tread where it fits: it comes
-            // down past the nosing and needs room to (15 cm in the last 1.5 cm of its way). The
-            // corner before the first (i = -1) is no nosing.
-            let heel_past = if *up || i < 0 {
-                margin_m
-            } else {
-                (2.0 * margin_m).max(DOWN_HEEL_PAST_MIN_M).min(run_m - foot_m - margin_m).max(margin_m)
-            };
+            // The corner before the first (i = -1) is no nosing.
+            let heel_past = if i < 0 { margin_m } else { heel_past_nosing };
             for cand in [nosing + heel_past, nosing - foot_m - margin_m] {
                 if cand > last_nosing + margin_m && i < *count as i64 - 1 {
                     continue;
                 }
-                if !crosses(cand) && (cand - heel_x).abs() < best_d {
+                let clear = if i < 0 { !crosses_with(cand, margin_m) } else { !crosses(cand) };
+                if clear && (cand - heel_x).abs() < best_d {
                     best = cand;
                     best_d = (cand - heel_x).abs();
                 }
@@ -278,6 +286,20 @@ impl Terrain {
 /// (m): at a clearance of 0.5 cm two clearances left it 1 cm, and a fast swing cut the nosing
 /// 14-28 mm coming down (a reviewer's find).
 const DOWN_HEEL_PAST_MIN_M: f64 = 0.03;
+
+/// The least clearance (m) the walk keeps, whatever `legs.clearance_cm` asks (0 is valid
+/// there). At none, a foot set against a riser stands on the riser's plane, where the ground
+/// reads the upper tread (a planted toe read 200 mm under it through every stance up 20 cm
+/// rises), and the swing simulation's path check, which lifts the heel curve where a chord
+/// between two samples crosses a nosing, never lifts it clear of a corner it must only graze:
+/// pass after pass it asked 12-17 cm more until the heel stood 1.5 m up (18 reach failures up 20
+/// tall treads at 0.4 m/s, a 1.5 m body). At 0.5 / 1 mm the toe still went 0.31 / 0.12 mm
+/// under a tread landing on it; at 2 mm, none.
+pub const LEAST_CLEARANCE_M: f64 = 0.002;
+
+/// How near (m) a corner may be to a foot's edge and still not count as under it: a candidate
+/// set at `nosing + past` reads the nosing at `x - past` give or take a rounding.
+const EDGE_M: f64 = 1e-9;
 
 /// 1-D midpoint displacement: heights at `2^k + 1` points spaced `segment_m`, enough to
 /// cover `length_m`. The ends start at 0; each level displaces every midpoint by a uniform
@@ -412,6 +434,14 @@ mod tests {
         let short = Terrain::new(TerrainKind::Stairs { rise_m: 0.15, run_m: 0.3, count: 8, up: false, start_x_m: 2.0 });
         let x = short.settle_footfall(2.31, 0.26, 0.015);
         assert!((x - (2.3 + 0.025)).abs() < 1e-9, "{x}");
+        // At a small clearance a heel 1 cm past the nosing clears it by more than the margin:
+        // down a flight it moves on all the same; up, it stays.
+        for (heel_past, up_x, down_x) in [(0.01, nosing + 0.01, nosing + 0.03), (0.035, nosing + 0.035, nosing + 0.035)]
+        {
+            let up = Terrain::new(kind(true)).settle_footfall(nosing + heel_past, 0.26, 0.002);
+            let down = Terrain::new(kind(false)).settle_footfall(nosing + heel_past, 0.26, 0.002);
+            assert!((up - up_x).abs() < 1e-9 && (down - down_x).abs() < 1e-9, "{heel_past}: {up} {down}");
+        }
     }
 
     #[test]
