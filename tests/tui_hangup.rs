@@ -209,8 +209,10 @@ fn recovered_edits_are_offered_on_the_next_start_and_load_to_the_same_parameters
 
     // Next start: the lab offers them; `l` loads them as unsaved edits, the file is removed.
     let mut lab = start(BIN, &["mine.toml"], &d);
-    let screen = lab.wait_for("Unsaved edits found");
-    assert!(screen.contains("mine.toml.recovery"), "{screen}");
+    // The dialog's title can reach the screen a write before its text (seen under load).
+    lab.wait_for("Unsaved edits found");
+    let screen = lab.wait_for("mine.toml.recovery");
+    assert!(screen.contains("Unsaved edits found"), "{screen}");
     lab.send(b"l");
     lab.wait_for("recovered the unsaved edits");
     lab.wait_for("modified (1)");

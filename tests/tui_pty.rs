@@ -109,8 +109,11 @@ impl Session {
 #[test]
 fn the_lab_runs_in_a_pty_answers_keys_and_quits_cleanly() {
     let mut s = start(&["configs/default.toml"]);
-    let screen = s.wait_for("Parameters");
-    assert!(screen.contains("Walk: side view") && screen.contains("configs/default.toml"), "{screen}");
+    // One frame can reach the screen in several writes: wait for each part.
+    s.wait_for("Parameters");
+    s.wait_for("Walk: side view");
+    let screen = s.wait_for("configs/default.toml");
+    assert!(screen.contains("Parameters") && screen.contains("Walk: side view"), "{screen}");
     s.send(b"?");
     s.wait_for("Keys (any key closes)");
     s.send(b"x");
