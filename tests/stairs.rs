@@ -193,7 +193,7 @@ fn a_swing_toe_does_not_dip_into_rough_ground() {
 }
 
 /// `legs.clearance_cm = 0` is a valid setting, and the walk keeps 2 mm all the same
-/// (`params::LEAST_CLEARANCE_M`). At none, up 20 tall treads a planted toe stood on the riser's
+/// (`terrain::LEAST_CLEARANCE_M`). At none, up 20 tall treads a planted toe stood on the riser's
 /// plane (200 mm under the upper tread by the checks) and the swing simulation lifted a heel
 /// 1.5 m (18 reach failures); down a flight at 0-0.5 cm a heel landing 1 cm past a nosing was
 /// thrown up to 75 cm over the tread, the hip flexing 60° in a frame, and came down through
