@@ -252,9 +252,8 @@ impl Terrain {
         };
         let crosses_with = |x: f64, behind: f64| {
             // A corner exactly at the edge does not cross (a candidate is set there).
-            self.corners_between(x - behind, x + foot_m + margin_m)
-                .iter()
-                .any(|&c| c > x - behind + EDGE_M && c < x + foot_m + margin_m - EDGE_M)
+            self.corners(x - behind, x + foot_m + margin_m)
+                .any(|c| c > x - behind + EDGE_M && c < x + foot_m + margin_m - EDGE_M)
         };
         let crosses = |x: f64| crosses_with(x, heel_past_nosing);
         if !crosses(heel_x) {

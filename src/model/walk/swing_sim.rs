@@ -107,23 +107,20 @@ impl Walker {
                 let (heel_deficit, toe_deficit, path_lack) =
                     self.sample_clearance(plan, s, curves[i].progress, &pose, (prev_toe, prev_heel));
                 (prev_toe, prev_heel) = (pose.toe_tip, pose.heel);
-                if let Some((back, lack)) = path_lack.filter(|_| s > 0.08 && s < 0.985) {
+                // `sample_clearance` reads a path only where the simulation raises.
+                if let Some((back, lack)) = path_lack {
                     plan.heel_height.raise_at(s - back / SWING_SAMPLES as f64, lack + 1e-4);
                     plan.raises += 1;
                     raised = true;
                     continue;
                 }
                 // A toe too close to the ground is lifted by the ankle first.
-                if toe_deficit.0 > heel_deficit.max(1e-5)
-                    && s > 0.08
-                    && s < 0.985
-                    && lift_toe(plan, s, ankle_deg, toe_deficit)
-                {
+                if toe_deficit.0 > heel_deficit.max(1e-5) && raises_at(s) && lift_toe(plan, s, ankle_deg, toe_deficit) {
                     (raised, ankle_raised) = (true, true);
                     continue;
                 }
                 let deficit = heel_deficit.max(toe_deficit.0);
-                if deficit > 1e-5 && s > 0.08 && s < 0.985 {
+                if deficit > 1e-5 && raises_at(s) {
                     plan.heel_height.raise_at(s, deficit + 1e-4);
                     plan.raises += 1;
                     raised = true;
@@ -158,8 +155,8 @@ impl Walker {
             ground_toe = ground_toe.max(riser.nosing_y);
         }
         let (heel_deficit, toe_deficit) = self.clearance_deficits(pose, ground_toe, needed);
-        // Only where the simulation raises for it (its caller's window).
-        let path = if s > 0.08 && s < 0.985 {
+        // Only where the simulation raises for it.
+        let path = if raises_at(s) {
             match (self.path_lack(prev_heel, pose.heel, needed.0), self.path_lack(prev_toe, pose.toe_tip, needed.0)) {
                 (Some(h), Some(t)) => Some(if t.1 > h.1 { t } else { h }),
                 (h, t) => h.or(t),
@@ -211,6 +208,13 @@ impl Walker {
         }
         (heel_deficit, toe_deficit)
     }
+}
+
+/// Whether the simulation raises the curves for the ground at swing fraction `s`: not in the
+/// first 8 % of the swing, where the toe leaves the ground by design (the swing target keeps it
+/// clear there), nor in the last 1.5 %, where the heel meets its footfall.
+fn raises_at(s: f64) -> bool {
+    s > 0.08 && s < 0.985
 }
 
 /// How near the toe at toe-off a riser must be for the swing to hold the toe behind it (m),
