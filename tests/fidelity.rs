@@ -53,7 +53,10 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 0.988 / 10, 1.73 / 0.975 / 0; session 17: 2.05 / 0.994 / 0, 3.21 /
         // 0.991 / 8, 2.03 / 0.962 / 0; session 14: 2.08 / 0.994 / 0; 4.91 / 0.986 / 14; 2.13 /
         // 0.967 / 0; session 13: 3.28 / 0.994 / 0; 7.25 / 0.983 / 27; 2.69 / 0.991 / 0).
-        ("configs/default.toml", &[], [(1.8, 0.995, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        // Session 25, the heel pad and the slow rise out of double support: 1.43 / 0.996 / 0;
+        // 2.91 / 0.993 / 6; 2.03 / 0.976 / 0 (before: 1.62 / 0.997 / 0; 3.90 / 0.986 / 10; 1.97 /
+        // 0.981 / 0).
+        ("configs/default.toml", &[], [(1.6, 0.995, 0.0), (3.1, 0.99, 8.0), (2.2, 0.97, 4.0)]),
         // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.54 / 0.992 / 0; 3.44 / 0.987 / 2;
         // 1.79 / 0.972 / 0 (session 20, the slow walk's pelvis falling late into double support
         // for people's vertical range, 1.36 -> 2.14 cm; session 19: 2.28 / 0.990 / 0, 3.07 /
@@ -63,13 +66,17 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // the slow designs' refit and the mid-stance knee of 7 -> 4 deg: 2.79 / 0.986 / 0, 3.18 / 0.992 / 2, 1.42 / 0.976 / 0; session 16:
         // 2.83 / 0.991 / 0, 4.34 / 0.991 / 2, 2.04 / 0.965 / 0; session 14: 3.73 / 0.991, 6.65 /
         // 0.989 / 14, 2.14 / 0.965).
-        ("configs/stroll.toml", &[], [(2.3, 0.99, 0.0), (3.6, 0.985, 4.0), (1.9, 0.965, 4.0)]),
+        // Session 25, half the heel pad at 0.9 m/s: 2.02 / 0.995 / 0; 2.77 / 0.991 / 0; 1.78 /
+        // 0.970 / 0 (before: 2.14 / 0.995 / 0; 3.36 / 0.987 / 2; 1.72 / 0.973 / 0).
+        ("configs/stroll.toml", &[], [(2.2, 0.99, 0.0), (3.0, 0.988, 2.0), (1.9, 0.965, 4.0)]),
         // 1.75 m/s, between the 1.59 and 1.80 m/s blocks: 2.89 / 0.992 / 0; 4.28 / 0.980 / 10;
         // 2.73 / 0.975 / 0 (session 19; session 18: 2.08 / 0.994 / 0, 4.41 / 0.981 / 10, 2.30 /
         // 0.971 / 0; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
         // 0.972 / 0; session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
         // its push-off at -25.6 deg; session 14: 2.68 / 0.992, 5.91 / 0.974 / 12, 3.60).
-        ("configs/brisk.toml", &[], [(3.0, 0.99, 0.0), (4.5, 0.975, 14.0), (3.0, 0.965, 4.0)]),
+        // Session 25: 2.99 / 0.991 / 0; 3.42 / 0.986 / 8; 2.74 / 0.975 / 0 (before: 2.97 / 0.992
+        // / 0; 4.31 / 0.979 / 10; 2.80 / 0.977 / 0).
+        ("configs/brisk.toml", &[], [(3.1, 0.99, 0.0), (3.6, 0.983, 10.0), (3.0, 0.965, 4.0)]),
         // 2.50 / 0.991 / 0; 3.51 / 0.987 / 0; 1.86 / 0.969 / 0 (session 20: the pelvis falls late
         // into double support and its walked range is 1.99 cm, 0.81 before, people's 2.54 ±
         // 0.31; session 19: 2.88 / 0.982 / 0, 2.70 / 0.994 / 2, 1.99 / 0.955 / 0; session 18: 3.06 /
@@ -89,7 +96,10 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 2.54 / 0.991 / 0, 3.22 / 0.995 / 0, 1.62 / 0.976 / 0; session 16: 2.64 / 0.994 / 0,
         // 4.30 / 0.992 / 0, 2.20 / 0.964 / 0; session 14: 3.44 / 0.994, 6.40 / 0.989 / 16, 2.33
         // / 0.966).
-        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.35, 0.99, 0.0), (3.9, 0.98, 8.0), (1.7, 0.975, 4.0)]),
+        // Session 25, the heel pad whole from 1.0 m/s: 1.98 / 0.994 / 0; 2.69 / 0.991 / 0; 1.64 /
+        // 0.974 / 0 (before: 2.10 / 0.995 / 0; 3.64 / 0.984 / 6; 1.31 / 0.984 / 0 — the ankle's
+        // price, its loading plantarflexion 2° deeper than people's).
+        ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.1, 0.99, 0.0), (2.9, 0.988, 2.0), (1.8, 0.97, 4.0)]),
         // Slower than the slowest norms (0.80 m/s, compared with that block): session 22's pelvis
         // nearer the heel for people's vertical range (1.54 -> 1.97 cm at 0.7 m/s) costs the shape
         // of the ankle, r 0.942 -> 0.906 at 0.7 and 0.953 -> 0.932 at 0.75 m/s, under issue 12's
@@ -98,13 +108,15 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         ("configs/default.toml", &["walk.speed_mps=0.7"], [(3.2, 0.985, 0.0), (3.9, 0.985, 4.0), (3.3, 0.9, 4.0)]),
         ("configs/default.toml", &["walk.speed_mps=0.75"], [(2.7, 0.985, 0.0), (3.8, 0.985, 4.0), (2.8, 0.925, 4.0)]),
         // As the default.
-        ("configs/default.toml", &["walk.speed_mps=1.3"], [(1.8, 0.995, 0.0), (4.1, 0.985, 12.0), (2.3, 0.97, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=1.3"], [(1.6, 0.995, 0.0), (3.1, 0.99, 8.0), (2.2, 0.97, 4.0)]),
         // 2.30 / 0.994 / 0; 3.99 / 0.984 / 10; 2.32 / 0.974 / 0 (session 19; session 18: 1.91 /
         // 0.995 / 0, 3.92 / 0.986 / 8, 1.67 / 0.979 / 0; session 17: 3.08 /
         // 0.990 / 0, 4.29 / 0.980 / 8, 1.74 / 0.976 / 0; session 15: 2.48 / 0.993 / 0,
         // 3.44 / 0.988 / 6, 2.75 / 0.974 / 0, its push-off at -23.6 deg; session 14: 2.21 /
         // 0.993, 5.70 / 0.979 / 18, 2.80 / 0.981 / 2).
-        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.4, 0.99, 0.0), (4.2, 0.98, 12.0), (2.6, 0.97, 4.0)]),
+        // Session 25: 2.37 / 0.993 / 0; 3.12 / 0.989 / 8; 2.23 / 0.975 / 0 (before: 2.38 / 0.994
+        // / 0; 4.05 / 0.982 / 10; 2.29 / 0.976 / 0).
+        ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.4, 0.99, 0.0), (3.3, 0.985, 10.0), (2.6, 0.97, 4.0)]),
     ];
 
     for (config, sets, bounds) in cases {
@@ -162,7 +174,12 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 }
 
 /// The loading-response knee: its peak (0-25 % of the cycle, right leg's mean cycle) near the
-/// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Measured
+/// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Session
+/// 25, the heel pad (`walk::heel_pad`) and the slow rise out of double support, whole from 1.0
+/// m/s: 10.6° at 10 % at 1.0 m/s (norms 11.3 at 12), 16.0 at 13 % at 1.3 (16.5 at 13), 19.1 at
+/// 11 % at 1.6 (20.0 at 13), read every 1 %; before, 13.7 at 8 %, 18.1 at 9 %, 21.5 at 9 %: the
+/// timing is held to 2 % from 1.0 m/s up (4 % before), the size to 1° over. 0.8 m/s, without
+/// the pad, as before: 13.5 at 8 % (8.3 at 11). Measured
 /// session 20: 13.4 deg at 8 % at 0.8 m/s, 13.7 at 8 % at 1.0 (the pelvis falls late and deeper
 /// into double support, for people's vertical range, and the landing knee takes it: the
 /// bound at 0.8 m/s 2.5 -> 5.5°, inside the norms' SD there, 6.8°). Session 19: 10.4 deg at 8 % at 0.8 m/s (norms 8.3 at 11), 13.3 at 8 % at 1.0 (11.3 at 12;
@@ -176,7 +193,8 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 /// at 16 %.
 #[test]
 fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
-    for (speed, most_deg_over) in [(0.8, 5.5), (1.0, 3.0), (1.3, 2.5)] {
+    // (speed, most degrees over the norms' peak, most % of the cycle from its timing).
+    for (speed, most_deg_over, most_pct_off) in [(0.8, 5.5, 4), (1.0, 1.0, 2), (1.3, 1.0, 2), (1.6, 1.0, 2)] {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/default.toml");
         let params = gaitlab::config::load(&path, &[format!("walk.speed_mps={speed}")]).unwrap();
         let walk = gaitlab::snapshot::measure::measure(&path, &params).unwrap();
@@ -192,7 +210,7 @@ fn the_loading_knee_peaks_as_people_s_does_at_each_speed() {
             deg - norm_deg <= most_deg_over && deg > norm_deg - 1.5,
             "{speed} m/s: loading knee {deg:.1}, norms {norm_deg:.1} deg"
         );
-        assert!(pct.abs_diff(norm_pct) <= 4, "{speed} m/s: loading knee at {pct} %, norms at {norm_pct} %");
+        assert!(pct.abs_diff(norm_pct) <= most_pct_off, "{speed} m/s: loading knee at {pct} %, norms at {norm_pct} %");
     }
 }
 
@@ -313,6 +331,14 @@ fn the_calibrated_shapes_are_there_on_the_default_walk() {
     for pct in [80, 84, 88, 92] {
         assert!((-5.0..=8.0).contains(&at(&ankle, pct)), "ankle at {pct} %: {}", at(&ankle, pct));
     }
+    // Issue 12's table: the loading-response knee peaks at 15-20° at 12-15 % of the cycle
+    // (session 25: 16.0° at 13 %, read every 1 %; before the heel pad 18.1° at 9 %).
+    let (load_i, load) = knee.iter().enumerate().take(13).fold((0, 0.0), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
+    assert!(
+        (12..=15).contains(&(2 * load_i)) && (15.0..=20.0).contains(&load),
+        "loading knee {load} at {} %",
+        2 * load_i
+    );
     // The swing knee's peak in early-to-mid swing (norm 62° at 74 %).
     let (peak_i, peak) = knee.iter().enumerate().skip(31).fold((0, 0.0), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
     assert!((70..=80).contains(&(2 * peak_i)) && (55.0..=70.0).contains(&peak), "{peak} at {} %", 2 * peak_i);

@@ -261,7 +261,43 @@ const PELVIS_VERTICAL_KEYS: [[(f64, f64, f64); 3]; 3] = [
     [(0.0, 0.0, 0.0), (0.5, 0.5, 1.5), (1.0, 1.0, 0.0)],
 ];
 
-const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
+/// Session 25, with the heel pad ([`crate::model::walk`]'s `heel_pad`): the rise starts
+/// slowly instead, 0.443 of the way up at half the segment, so that the landing leg's hip
+/// closes on its sinking ankle through the loading response as people's does, the knee
+/// flexing to its peak at 13 % of the cycle rather than at once (1.3 m/s: knee RMS 3.90 ->
+/// 2.91 deg with the pad, its loading peak 18.1 deg at 9 % -> 16.0 at 13 %; people 16.5 at
+/// 13). With the quick rise the pad alone took the peak to 12.2 deg at 9 %; the slow rise
+/// without the pad, to 21.3 deg at 12 % (docs/gait-model.md §12).
+const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.5, 0.443, 1.511), (1.0, 1.0, 0.0)];
+
+/// The quick rise of sessions 14-24 (above), kept where the heel pad is off: on stairs (their
+/// flights were reviewed with it) and in slow walks (`speed_laws::heel_pad_share`).
+const PELVIS_QUICK_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
+
+/// The rise out of double support at `speed_mps`: the quick rise where the heel pad is off, the
+/// slow one where it is whole, and between them the blend by the pad's share. To blend, each
+/// design gets the other's inner knot at its own value and slope there (a cubic split at a
+/// knot is the same cubic), so the blend is the one curve with four keys.
+fn pelvis_rise_for(speed_mps: f64, ground: Ground) -> Curve {
+    let share = if ground == Ground::Flat { crate::model::speed_laws::heel_pad_share(speed_mps) } else { 0.0 };
+    let keys: Vec<(f64, f64, f64)> = if share <= 0.0 {
+        PELVIS_QUICK_RISE_KEYS.to_vec()
+    } else if share >= 1.0 {
+        PELVIS_RISE_KEYS.to_vec()
+    } else {
+        // The quick design at 0.5 and the slow one at 0.35, by the Hermite basis.
+        let quick = [
+            (0.0, 0.0, 0.0),
+            (0.35, 0.402, 1.336),
+            (0.5, 0.601_420_118_343_195_3, 1.296_094_674_556_212_7),
+            (1.0, 1.0, 0.0),
+        ];
+        let slow = [(0.0, 0.0, 0.0), (0.35, 0.236_253_5, 1.222_13), (0.5, 0.443, 1.511), (1.0, 1.0, 0.0)];
+        quick.iter().zip(slow).map(|(a, b)| (a.0, a.1 + share * (b.1 - a.1), a.2 + share * (b.2 - a.2))).collect()
+    };
+    Curve::hermite(CurveName::PelvisVerticalDsMs.key(), &keys)
+        .expect("blends of valid designs with the same knots are valid")
+}
 
 /// Thesis fig 6.10's shape, first drawn from the normative walk's heel (data/normative/
 /// through this leg chain): 20 cm up at toe-off, its peak of 26 cm at 0.16 of the swing, down
@@ -368,27 +404,41 @@ const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// and the fast walk's differ in opposite directions from the comfortable one's.
 pub const DESIGN_SPEEDS_MPS: [f64; 3] = [0.8, 1.3, 1.6];
 
+/// The ground a walk's designs are chosen for: some are drawn for stairs, and the slow rise
+/// out of double support comes with the heel pad, which flat ground alone has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ground {
+    /// `terrain.kind = "flat"`.
+    Flat,
+    /// `terrain.kind = "stairs"`.
+    Stairs,
+    /// Slopes and rough ground.
+    Uneven,
+}
+
 impl CurveName {
     /// The default design at walking speed `speed_mps`: [`CurveName::default_curve`] blended
     /// between the designs at [`DESIGN_SPEEDS_MPS`] for the curves drawn at several speeds.
     #[must_use]
     pub fn default_curve_at(self, speed_mps: f64) -> Curve {
-        self.default_curve_for(speed_mps, false)
+        self.default_curve_for(speed_mps, Ground::Flat)
     }
 
-    /// [`CurveName::default_curve_at`] for a walk on stairs (`on_stairs`) or elsewhere: on
-    /// stairs the slow designs of the heel rise and the fall into double support are session
-    /// 19's (`HEEL_RISE_SLOW_ON_STAIRS`, the smoothstep), with `speed_laws::STAIRS`.
+    /// [`CurveName::default_curve_at`] for a walk on `ground`: on stairs the slow designs of the heel rise and the fall into double support are session
+    /// 19's (`HEEL_RISE_SLOW_ON_STAIRS`, the smoothstep), with `speed_laws::STAIRS`, and the
+    /// rise out of double support the quick one of sessions 14-24 (`PELVIS_QUICK_RISE_KEYS`),
+    /// as on slopes and rough ground, where the heel pad is off.
     #[must_use]
-    pub fn default_curve_for(self, speed_mps: f64, on_stairs: bool) -> Curve {
+    pub fn default_curve_for(self, speed_mps: f64, ground: Ground) -> Curve {
         let mut designs: [&[(f64, f64, f64)]; 3] = match self {
             CurveName::SwingForward => SWING_FORWARD_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::SwingHeelHeight => SWING_HEEL_HEIGHT_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::HeelRise => HEEL_RISE_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::PelvisVertical => PELVIS_VERTICAL_KEYS.each_ref().map(|k| k.as_slice()),
+            CurveName::PelvisVerticalDsMs => return pelvis_rise_for(speed_mps, ground),
             _ => return self.default_curve(),
         };
-        if on_stairs {
+        if ground == Ground::Stairs {
             match self {
                 CurveName::HeelRise => designs[0] = &HEEL_RISE_SLOW_ON_STAIRS,
                 CurveName::PelvisVertical => designs[0] = &PELVIS_VERTICAL_KEYS[1],
@@ -429,9 +479,9 @@ impl CurveSet {
     pub(crate) fn with_overrides<'a>(
         overrides: impl IntoIterator<Item = (&'a String, &'a Vec<(f64, f64)>)>,
         speed_mps: f64,
-        on_stairs: bool,
+        ground: Ground,
     ) -> Result<Self, CurveError> {
-        let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve_for(speed_mps, on_stairs)).collect();
+        let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve_for(speed_mps, ground)).collect();
         for (name, points) in overrides {
             if let Some(c) = CurveName::from_key(name) {
                 curves[c as usize] = Curve::from_pairs(name.clone(), points)?;
@@ -539,10 +589,10 @@ mod speed_design_tests {
         let mine = vec![(0.0, 0.0), (0.3, 0.2), (0.7, 0.9), (1.0, 1.0)];
         let overrides = [("swing_forward".to_string(), mine)];
         for v in [0.8, 1.6] {
-            let set = CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), v, false).unwrap();
+            let set = CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), v, Ground::Flat).unwrap();
             assert_eq!(
                 set.get(CurveName::SwingForward).eval(0.5),
-                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3, false)
+                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3, Ground::Flat)
                     .unwrap()
                     .get(CurveName::SwingForward)
                     .eval(0.5)

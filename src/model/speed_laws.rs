@@ -208,6 +208,18 @@ pub(crate) fn stance_rise(speed_mps: f64) -> f64 {
     ((1.3 - speed_mps) / 0.5).clamp(0.0, 1.0)
 }
 
+/// The share (0 to 1) of the heel pad (`walk::heel_pad`) and of the slow rise out of double
+/// support that comes with it (`gait_curves::PELVIS_RISE_KEYS`) at `speed_mps`: none up to
+/// 0.8 m/s, whole from 1.0 m/s, eased between. Whole at 0.8 m/s the pair flexed the loading
+/// knee less (10.6 deg at 9 % against 13.5 at 8 %; people 8.3 at 11) but took the ankle's r
+/// against the norms 0.966 -> 0.951, its push-off -6.5 -> -5.1 deg (people -7.9), and the
+/// 0.7 m/s swing knee bent again 0.9 deg before heel strike; the slow walks' designs and
+/// knots were fitted to the rigid foot (docs/gait-model.md §12, session 25).
+pub(crate) fn heel_pad_share(speed_mps: f64) -> f64 {
+    let u = ((speed_mps - 0.8) / 0.2).clamp(0.0, 1.0);
+    u * u * (3.0 - 2.0 * u)
+}
+
 /// Peak-to-peak pelvic obliquity (deg, before `walk.sway`) at `speed_mps` when
 /// `pelvis.obliquity_range_deg` is left out: 8.2° up to 0.8 m/s, 7.7° more per m/s faster, at
 /// most 14.5°. The speed-matched norms (data/normative/joint_angles_by_speed.csv) range 8.2 /

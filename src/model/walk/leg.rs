@@ -224,6 +224,9 @@ pub struct LegTarget {
     pub(crate) yaw: f64,
     /// Extra heel rise the stance leg needed to reach the hip (rad), 0 mostly.
     pub(crate) extra_heel_rise: f64,
+    /// How far (m) the loaded heel pad is compressed: the ankle sits this much lower than the
+    /// rigid foot would put it, the contact points on the ground.
+    pub(crate) pad: f64,
 }
 
 /// The solved leg.
@@ -293,6 +296,10 @@ pub struct LegState {
     /// with `stance_rise`: read live, a change of the margin mid-stance dropped a lifted pelvis
     /// 4.1 mm in a frame (1.1 mm with the lift off).
     pub(crate) stance_reach: f64,
+    /// How far (m) the loaded heel pad lets the ankle sink in this leg's loading response
+    /// (`heel_pad::PAD_M` on level ground, none elsewhere), frozen when its step is planned so
+    /// that the reach guard sees the stance that will be walked.
+    pub(crate) pad: f64,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
     /// Counts phase changes, so one phase instance can be told from the next.

@@ -16,6 +16,7 @@
 mod ankle_pitch;
 pub mod frame;
 pub mod gait;
+mod heel_pad;
 mod initiation;
 pub mod leg;
 mod live;
@@ -24,6 +25,7 @@ mod pace_state;
 pub mod pelvis;
 mod planner;
 pub mod pose;
+mod reach_angles;
 mod reach_guard;
 mod stance_rise;
 mod start;
@@ -32,15 +34,13 @@ mod swing_sim;
 pub mod timing;
 pub mod upper;
 
-pub use gait::{
-    Gait, HEEL_RISE_DESIGN_STRIDE_M, MAX_HEEL_RISE, MIN_STRIKE_ANGLE, enter_stance_phase, heel_rise_to_reach,
-    swing_target,
-};
+pub use gait::{Gait, HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, enter_stance_phase, swing_target};
 pub use pose::{bone_frame, ik_question, leg_pose, solve_leg};
+pub use reach_angles::{MAX_HEEL_RISE, heel_rise_to_reach};
 
 use crate::model::body::{Pose, Side};
 use crate::model::curve::Curve;
-use crate::model::gait_curves::CurveSet;
+use crate::model::gait_curves::{CurveSet, Ground};
 use crate::model::ik::{IkAnswer, LegSolver, TwoBoneSolution};
 use crate::model::params::{Resolved, TerrainChoice, WalkParams};
 use crate::model::schedule::PaceAction;
@@ -142,9 +142,13 @@ pub struct Walker {
 /// what a walker starts from.
 pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
     let r = params.resolve();
-    let design =
-        CurveSet::with_overrides(&params.curves, params.walk.speed_mps, params.terrain.kind == TerrainChoice::Stairs)
-            .map_err(|e| ModelError(e.to_string()))?;
+    let ground = match params.terrain.kind {
+        TerrainChoice::Flat => Ground::Flat,
+        TerrainChoice::Stairs => Ground::Stairs,
+        TerrainChoice::Slope | TerrainChoice::Random => Ground::Uneven,
+    };
+    let design = CurveSet::with_overrides(&params.curves, params.walk.speed_mps, ground)
+        .map_err(|e| ModelError(e.to_string()))?;
     if r.toe_off.is_nan() || r.toe_off <= 0.5 {
         return Err(ModelError(format!(
             "toe-off at {:.3} of the cycle leaves no double support: that is a run, which gaitlab does not model",

@@ -10,6 +10,7 @@
 use crate::model::body::Side;
 use crate::model::curve::Curve;
 use crate::model::gait_curves::CurveName;
+use crate::model::params::TerrainChoice;
 use crate::model::search::Candidate;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::gait::{MIN_STRIKE_ANGLE, shank_angle};
@@ -69,6 +70,9 @@ impl Walker {
         // (at the walk's end a shorter braking step, then the closing step beside it).
         let (kind, to) = self.next_footfall(side, &other);
         let strike_phase = self.legs[i].cycle_start + 1.0;
+        let flat = self.params.terrain.kind == TerrainChoice::Flat;
+        let walking = matches!(kind, StepKind::Starting | StepKind::Steady);
+        self.legs[i].pad = super::heel_pad::for_stance(flat && walking, self.params.walk.speed_mps);
         // Pelvis keys: the coming double support (position chosen below), this leg's mid-stance.
         let ms_before = self.step_keys(kind, &other, &to, strike_phase);
         if kind == StepKind::Braking {

@@ -40,8 +40,9 @@ pub fn leg_pose(r: &Resolved, hip: DVec3, target: LegTarget, ik: &TwoBoneSolutio
     let foot = foot_rotation(target.yaw, target.pitch);
     // Flat-footed stance has no toe bend; skipping the rotation saves a sin/cos per solve.
     let toe = if target.toe_bend == 0.0 { foot } else { foot * DQuat::from_rotation_z(target.toe_bend) };
-    let heel = ik.end + foot * dims.heel_local();
-    let ball = ik.end + foot * dims.ball_local();
+    let up = DVec3::new(0.0, target.pad, 0.0);
+    let heel = ik.end + foot * dims.heel_local() + up;
+    let ball = ik.end + foot * dims.ball_local() + up;
     let toe_tip = ball + toe * DVec3::new(dims.toe_length(), 0.0, 0.0);
     LegPose {
         hip,

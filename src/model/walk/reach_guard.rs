@@ -7,9 +7,10 @@
 use crate::model::body::Side;
 use crate::model::walk::Walker;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
-use crate::model::walk::gait::{MAX_HEEL_RISE, MIN_STRIKE_ANGLE, SwingCurvesAt, swing_target_at};
+use crate::model::walk::gait::{MIN_STRIKE_ANGLE, SwingCurvesAt, swing_target_at};
 use crate::model::walk::leg::{Footfall, LegPhase, SwingPlan, foot_rotation};
 use crate::model::walk::pelvis::{KeyKind, PelvisKey, PelvisPose};
+use crate::model::walk::reach_angles::MAX_HEEL_RISE;
 use glam::DVec3;
 
 impl Walker {
@@ -144,6 +145,7 @@ impl Walker {
         if let Some(t) = self.trailing_reach(side, with_swing) {
             for &phase in &t.phases {
                 let (pose, x, side_sign) = (self.pelvis_at(phase), self.rekeyed_x(phase), side.other().sign());
+                // No heel pad here: the trailing leg let its own go by 30 % of its cycle.
                 let allowed = t.allowed(self.rekeyed_hip(&pose, x, phase, side_sign), limit);
                 let allowed = Allowed::Height(if allowed.is_finite() { allowed } else { f64::INFINITY });
                 points.push(GuardPoint { phase, pose, x, side_sign, allowed });
@@ -171,7 +173,16 @@ impl Walker {
                 _ => {
                     let s = ((phase - strike_phase) / r.foot_flat).clamp(0.0, 1.0);
                     let pitch = footfall.ground_angle + strike_angle * (1.0 - s);
-                    let ankle = footfall.heel - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local();
+                    let landing = &self.legs[side.index()];
+                    let pad = super::heel_pad::compression_at(
+                        landing.pad,
+                        phase - strike_phase,
+                        landing.heel_rise,
+                        r.toe_off,
+                    );
+                    let ankle = footfall.heel
+                        - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
+                        - glam::DVec3::new(0.0, pad, 0.0);
                     Allowed::Height(allowed_height(self.rekeyed_hip(&pose, x, phase, side_sign), ankle, limit))
                 }
             };

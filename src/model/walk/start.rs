@@ -42,7 +42,7 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
         ball: DVec3::ZERO,
         toe_tip: DVec3::ZERO,
         reached: true,
-        target: LegTarget { ankle: DVec3::ZERO, pitch: 0.0, toe_bend: 0.0, yaw: 0.0, extra_heel_rise: 0.0 },
+        target: LegTarget { ankle: DVec3::ZERO, pitch: 0.0, toe_bend: 0.0, yaw: 0.0, extra_heel_rise: 0.0, pad: 0.0 },
     };
     let left_ball = left.heel + foot_rotation(left.yaw, left.ground_angle) * (dims.ball_local() - dims.heel_local());
     [
@@ -59,6 +59,7 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
             heel_rise: r.heel_rise,
             stance_rise: 0.0,
             stance_reach: r.reach_margin * dims.leg_reach(),
+            pad: 0.0,
             swing: None,
             phase_serial: 0,
             pose: placeholder,
@@ -76,6 +77,7 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
             heel_rise: r.heel_rise,
             stance_rise: 0.0,
             stance_reach: r.reach_margin * dims.leg_reach(),
+            pad: 0.0,
             swing: None,
             phase_serial: 0,
             pose: placeholder,
