@@ -61,6 +61,7 @@ pub(crate) fn derived_value(key: &str, p: &WalkParams, r: &Resolved) -> Option<f
         "pelvis.stance_rise" => r.stance_rise,
         "legs.toe_off" => r.toe_off,
         "legs.heel_rise" => r.heel_rise,
+        "legs.heel_pad_mm" => r.heel_pad * 1000.0,
         "arms.shoulder_range_deg" => deg(r.shoulder_range),
         "arms.elbow_range_deg" => deg(r.elbow_range),
         _ => return None,

@@ -261,6 +261,7 @@ pub static PARAMS: &[ParamSpec] = &[
     real!(legs => turnout_deg, "deg", -10.0, 30.0, "Foot turnout about the vertical; also turns the knee's reference direction"),
     real!(legs => knee_lift_cm, "cm", 0.0, 30.0, "Extra heel height in mid-swing"),
     real!(legs => clearance_cm, "cm", 0.0, 10.0, "Clearance the swing planner keeps between the foot and the ground or stair nosings; at least 0.2 cm is kept"),
+    auto!(legs => heel_pad_mm, "mm", 0.0, 10.0, "How far the stance ankle sinks into the heel pad in the loading response on flat ground, let go by 30 % of the cycle: 6 from 1.0 m/s, none at 0.8 m/s and slower; 0 for a rigid foot, as BVH and glTF skeletons have (their soles otherwise dip this much under the ground)"),
     auto!(arms => shoulder_range_deg, "deg", 0.0, 90.0, "Peak-to-peak shoulder flexion of the arm swing"),
     auto!(arms => elbow_range_deg, "deg", 0.0, 90.0, "Peak-to-peak elbow flexion of the arm swing"),
     real!(arms => elbow_min_flex_deg, "deg", 0.0, 90.0, "Least elbow flexion (the arm's greatest extension)"),

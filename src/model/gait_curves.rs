@@ -274,12 +274,11 @@ const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.5, 0.443, 1.
 /// flights were reviewed with it) and in slow walks (`speed_laws::heel_pad_share`).
 const PELVIS_QUICK_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
 
-/// The rise out of double support at `speed_mps`: the quick rise where the heel pad is off, the
-/// slow one where it is whole, and between them the blend by the pad's share. To blend, each
+/// The rise out of double support for a heel pad's `share` of the whole: the quick rise where
+/// the pad is off, the slow one where it is whole, and between them the blend. To blend, each
 /// design gets the other's inner knot at its own value and slope there (a cubic split at a
 /// knot is the same cubic), so the blend is the one curve with four keys.
-fn pelvis_rise_for(speed_mps: f64, ground: Ground) -> Curve {
-    let share = if ground == Ground::Flat { crate::model::speed_laws::heel_pad_share(speed_mps) } else { 0.0 };
+fn pelvis_rise_for(share: f64) -> Curve {
     let keys: Vec<(f64, f64, f64)> = if share <= 0.0 {
         PELVIS_QUICK_RISE_KEYS.to_vec()
     } else if share >= 1.0 {
@@ -435,7 +434,11 @@ impl CurveName {
             CurveName::SwingHeelHeight => SWING_HEEL_HEIGHT_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::HeelRise => HEEL_RISE_KEYS.each_ref().map(|k| k.as_slice()),
             CurveName::PelvisVertical => PELVIS_VERTICAL_KEYS.each_ref().map(|k| k.as_slice()),
-            CurveName::PelvisVerticalDsMs => return pelvis_rise_for(speed_mps, ground),
+            CurveName::PelvisVerticalDsMs => {
+                let pad_share =
+                    if ground == Ground::Flat { crate::model::speed_laws::heel_pad_share(speed_mps) } else { 0.0 };
+                return pelvis_rise_for(pad_share);
+            }
             _ => return self.default_curve(),
         };
         if ground == Ground::Stairs {
@@ -473,15 +476,20 @@ pub struct CurveSet {
 }
 
 impl CurveSet {
-    /// Defaults at walking speed `speed_mps`, on stairs or not ([`CurveName::default_curve_for`]),
-    /// with the given overrides (control points by curve name); an override holds at every
-    /// speed and on any ground.
+    /// Defaults at walking speed `speed_mps` on `ground` ([`CurveName::default_curve_for`]),
+    /// the rise out of double support for a heel pad's `pad_share` of the whole (on flat
+    /// ground; none elsewhere), with the given overrides (control points by curve name); an
+    /// override holds at every speed and on any ground.
     pub(crate) fn with_overrides<'a>(
         overrides: impl IntoIterator<Item = (&'a String, &'a Vec<(f64, f64)>)>,
         speed_mps: f64,
         ground: Ground,
+        pad_share: f64,
     ) -> Result<Self, CurveError> {
         let mut curves: Vec<Curve> = CurveName::ALL.iter().map(|c| c.default_curve_for(speed_mps, ground)).collect();
+        if ground == Ground::Flat {
+            curves[CurveName::PelvisVerticalDsMs as usize] = pelvis_rise_for(pad_share);
+        }
         for (name, points) in overrides {
             if let Some(c) = CurveName::from_key(name) {
                 curves[c as usize] = Curve::from_pairs(name.clone(), points)?;
@@ -589,10 +597,16 @@ mod speed_design_tests {
         let mine = vec![(0.0, 0.0), (0.3, 0.2), (0.7, 0.9), (1.0, 1.0)];
         let overrides = [("swing_forward".to_string(), mine)];
         for v in [0.8, 1.6] {
-            let set = CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), v, Ground::Flat).unwrap();
+            let set = CurveSet::with_overrides(
+                overrides.iter().map(|(k, p)| (k, p)),
+                v,
+                Ground::Flat,
+                crate::model::speed_laws::heel_pad_share(v),
+            )
+            .unwrap();
             assert_eq!(
                 set.get(CurveName::SwingForward).eval(0.5),
-                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3, Ground::Flat)
+                CurveSet::with_overrides(overrides.iter().map(|(k, p)| (k, p)), 1.3, Ground::Flat, 1.0)
                     .unwrap()
                     .get(CurveName::SwingForward)
                     .eval(0.5)

@@ -220,6 +220,15 @@ pub(crate) fn heel_pad_share(speed_mps: f64) -> f64 {
     u * u * (3.0 - 2.0 * u)
 }
 
+/// The whole heel pad (mm): the stance ankle's largest sinking below the rigid foot's, the size
+/// measured to give people's loading knee (`walk::heel_pad`).
+pub(crate) const HEEL_PAD_MM: f64 = 6.0;
+
+/// `legs.heel_pad_mm` when it is left out: [`HEEL_PAD_MM`] by [`heel_pad_share`].
+pub(crate) fn heel_pad_mm(speed_mps: f64) -> f64 {
+    HEEL_PAD_MM * heel_pad_share(speed_mps)
+}
+
 /// Peak-to-peak pelvic obliquity (deg, before `walk.sway`) at `speed_mps` when
 /// `pelvis.obliquity_range_deg` is left out: 8.2° up to 0.8 m/s, 7.7° more per m/s faster, at
 /// most 14.5°. The speed-matched norms (data/normative/joint_angles_by_speed.csv) range 8.2 /

@@ -14,6 +14,7 @@ pub mod fabrik;
 pub mod gradient;
 pub mod iterate;
 pub mod jacobian;
+pub mod params;
 pub mod settings;
 pub mod solver;
 pub(crate) mod swivel;

@@ -19,10 +19,11 @@
 //! the rigid walk's.
 
 use super::leg::{LegPhase, LegState};
-use crate::model::speed_laws::heel_pad_share;
+use crate::model::params::Resolved;
 
-/// The heel pad's largest compression (m), reached in the loading response.
-pub(crate) const PAD_M: f64 = 0.006;
+/// The whole heel pad (m), reached in the loading response (`legs.heel_pad_mm` sets a walk's;
+/// left out, `speed_laws::heel_pad_mm`).
+pub(crate) const PAD_M: f64 = crate::model::speed_laws::HEEL_PAD_MM / 1000.0;
 
 /// The share of the gait cycle over which the pad takes the landing's load (an ease-out, so
 /// the ankle's descent at heel strike carries on into the pad).
@@ -31,15 +32,22 @@ const LOADING_END: f64 = 0.06;
 /// The cycle phases between which the pad is let go as the load leaves the heel.
 const RELEASE: (f64, f64) = (0.10, 0.30);
 
-/// The pad (m) of a stance planned now at `speed_mps`, if it is one a pad is for: on flat
+/// The pad (m) of a stance planned now in a walk resolved to `r`, if it is one a pad is for: on flat
 /// ground only (its walks alone take the slow rise out of double support that goes with the
 /// pad, `gait_curves::Ground`; on stairs, slopes and rough ground the rigid foot's walk is the
 /// one reviewed against the terrain checks), and not in a stop's braking or closing step: the
 /// settle brings the pelvis to rest as high as the rigid legs reach, and the closing stance
 /// stands there with its phase held in loading.
 #[must_use]
-pub(crate) fn for_stance(padded: bool, speed_mps: f64) -> f64 {
-    if padded { PAD_M * heel_pad_share(speed_mps) } else { 0.0 }
+pub(crate) fn for_stance(padded: bool, r: &Resolved) -> f64 {
+    if padded { r.heel_pad } else { 0.0 }
+}
+
+/// The share of the slow rise out of double support (`gait_curves::PELVIS_RISE_KEYS`) that
+/// comes with a walk's pad on flat ground: the pad's share of [`PAD_M`].
+#[must_use]
+pub(crate) fn rise_share(r: &Resolved) -> f64 {
+    (r.heel_pad / PAD_M).clamp(0.0, 1.0)
 }
 
 /// How far (m) a pad of `pad` is compressed `q` (cycle phase) into a stance whose heel rises at

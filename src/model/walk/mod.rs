@@ -147,7 +147,7 @@ pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
         TerrainChoice::Stairs => Ground::Stairs,
         TerrainChoice::Slope | TerrainChoice::Random => Ground::Uneven,
     };
-    let design = CurveSet::with_overrides(&params.curves, params.walk.speed_mps, ground)
+    let design = CurveSet::with_overrides(&params.curves, params.walk.speed_mps, ground, heel_pad::rise_share(&r))
         .map_err(|e| ModelError(e.to_string()))?;
     if r.toe_off.is_nan() || r.toe_off <= 0.5 {
         return Err(ModelError(format!(
