@@ -74,9 +74,9 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 0.971 / 0; session 17: 3.54 / 0.988 / 0, 4.83 / 0.973 / 12, 2.22 /
         // 0.972 / 0; session 15: 3.04 / 0.992 / 0, 4.01 / 0.982 / 8, 3.58 / 0.969 / 6,
         // its push-off at -25.6 deg; session 14: 2.68 / 0.992, 5.91 / 0.974 / 12, 3.60).
-        // Session 25: 2.99 / 0.991 / 0; 3.42 / 0.986 / 8; 2.74 / 0.975 / 0 (before: 2.97 / 0.992
-        // / 0; 4.31 / 0.979 / 10; 2.80 / 0.977 / 0).
-        ("configs/brisk.toml", &[], [(3.1, 0.99, 0.0), (3.6, 0.983, 10.0), (3.0, 0.965, 4.0)]),
+        // Session 25, the heel pad let go sooner in fast walks: 2.88 / 0.992 / 0; 3.39 / 0.987 /
+        // 8; 2.75 / 0.977 / 0 (before: 2.97 / 0.992 / 0; 4.31 / 0.979 / 10; 2.80 / 0.977 / 0).
+        ("configs/brisk.toml", &[], [(3.0, 0.99, 0.0), (3.6, 0.983, 10.0), (3.0, 0.965, 4.0)]),
         // 2.50 / 0.991 / 0; 3.51 / 0.987 / 0; 1.86 / 0.969 / 0 (session 20: the pelvis falls late
         // into double support and its walked range is 1.99 cm, 0.81 before, people's 2.54 ±
         // 0.31; session 19: 2.88 / 0.982 / 0, 2.70 / 0.994 / 2, 1.99 / 0.955 / 0; session 18: 3.06 /
@@ -114,7 +114,7 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 0.990 / 0, 4.29 / 0.980 / 8, 1.74 / 0.976 / 0; session 15: 2.48 / 0.993 / 0,
         // 3.44 / 0.988 / 6, 2.75 / 0.974 / 0, its push-off at -23.6 deg; session 14: 2.21 /
         // 0.993, 5.70 / 0.979 / 18, 2.80 / 0.981 / 2).
-        // Session 25: 2.37 / 0.993 / 0; 3.12 / 0.989 / 8; 2.23 / 0.975 / 0 (before: 2.38 / 0.994
+        // Session 25: 2.26 / 0.994 / 0; 3.09 / 0.990 / 8; 2.23 / 0.977 / 0 (before: 2.38 / 0.994
         // / 0; 4.05 / 0.982 / 10; 2.29 / 0.976 / 0).
         ("configs/default.toml", &["walk.speed_mps=1.6"], [(2.4, 0.99, 0.0), (3.3, 0.985, 10.0), (2.6, 0.97, 4.0)]),
     ];
@@ -176,8 +176,8 @@ fn push_off_plantarflexion_is_inside_normal_adults_range() {
 /// The loading-response knee: its peak (0-25 % of the cycle, right leg's mean cycle) near the
 /// speed-matched norms' in size and timing, at slow speeds as at the comfortable one. Session
 /// 25, the heel pad (`walk::heel_pad`) and the slow rise out of double support, whole from 1.0
-/// m/s: 10.6° at 10 % at 1.0 m/s (norms 11.3 at 12), 16.0 at 13 % at 1.3 (16.5 at 13), 19.1 at
-/// 11 % at 1.6 (20.0 at 13), read every 1 %; before, 13.7 at 8 %, 18.1 at 9 %, 21.5 at 9 %: the
+/// m/s: 10.6° at 10 % at 1.0 m/s (norms 11.3 at 12), 16.0 at 13 % at 1.3 (16.5 at 13), 19.7 at
+/// 13 % at 1.6 (20.0 at 13), read every 1 %; before, 13.7 at 8 %, 18.1 at 9 %, 21.5 at 9 %: the
 /// timing is held to 2 % from 1.0 m/s up (4 % before), the size to 1° over. 0.8 m/s, without
 /// the pad, as before: 13.5 at 8 % (8.3 at 11). Measured
 /// session 20: 13.4 deg at 8 % at 0.8 m/s, 13.7 at 8 % at 1.0 (the pelvis falls late and deeper
@@ -423,9 +423,10 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
 
 /// The pelvis range the joint curves alone account for (`normative::pelvis_range_through_legs`,
 /// compare's "joint curves alone" line): put through the walk's legs, the walk's own mean
-/// angles give within 0.2 cm of what it walks (the chain leaves out the hips' ab/adduction and
-/// the trailing foot's roll: measured session 21, +0.16 / +0.15 / +0.14 / +0.04 / -0.07 cm at
-/// 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s), and from 0.8 to 1.6 m/s at least 85 % of what people's mean
+/// angles give within 0.25 cm of what it walks (the chain leaves out the hips' ab/adduction,
+/// the trailing foot's roll and, from session 25, the heel pad's sinking: measured session 21,
+/// +0.16 / +0.15 / +0.14 / +0.04 / -0.07 cm at 0.7 / 0.8 / 1.0 / 1.3 / 1.6 m/s; session 25
+/// +0.16 / +0.15 / +0.07 / -0.04 / -0.22 cm, the bound 0.2 -> 0.25), and from 0.8 to 1.6 m/s at least 85 % of what people's mean
 /// angles give (2.14 / 2.34 / 3.11 / 3.64 cm against 2.27 / 2.65 / 3.18 / 3.82): the walk's joint
 /// curves are not what holds its pelvis under the adults' markers (2.54 / 2.91 / 3.56 / 4.53
 /// cm), which people's own angles through this chain fall short of too, by 0.26-0.71 cm.
@@ -436,7 +437,7 @@ fn the_walk_s_joint_curves_give_its_pelvis_nearly_the_range_people_s_give_throug
         let c = compare("configs/default.toml", &[set.as_str()]);
         let (people, walk) = c.pelvis_range_through_legs_cm.expect("compare measures it on level ground");
         let walked = c.pelvis_vertical_range_cm;
-        assert!((walk - walked).abs() < 0.2, "{speed} m/s: through the legs {walk:.2}, walked {walked:.2}");
+        assert!((walk - walked).abs() < 0.25, "{speed} m/s: through the legs {walk:.2}, walked {walked:.2}");
         if speed >= 0.8 {
             assert!(walk >= 0.85 * people, "{speed} m/s: the walk's angles give {walk:.2} cm, people's {people:.2}");
             let markers = c.pelvis_norms.vertical_range_cm.0;

@@ -297,9 +297,9 @@ pub struct LegState {
     /// 4.1 mm in a frame (1.1 mm with the lift off).
     pub(crate) stance_reach: f64,
     /// How far (m) the loaded heel pad lets the ankle sink in this leg's loading response
-    /// (`heel_pad::PAD_M` on level ground, none elsewhere), frozen when its step is planned so
+    /// (`legs.heel_pad_mm` on flat ground, none elsewhere), frozen when its step is planned so
     /// that the reach guard sees the stance that will be walked.
-    pub(crate) pad: f64,
+    pub(crate) pad: super::heel_pad::HeelPad,
     /// The current swing's plan.
     pub swing: Option<SwingPlan>,
     /// Counts phase changes, so one phase instance can be told from the next.

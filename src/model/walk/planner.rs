@@ -72,7 +72,7 @@ impl Walker {
         let strike_phase = self.legs[i].cycle_start + 1.0;
         let flat = self.params.terrain.kind == TerrainChoice::Flat;
         let walking = matches!(kind, StepKind::Starting | StepKind::Steady);
-        self.legs[i].pad = super::heel_pad::for_stance(flat && walking, &self.gait.r);
+        self.legs[i].pad = super::heel_pad::for_stance(flat && walking, &self.gait.r, self.params.walk.speed_mps);
         // Pelvis keys: the coming double support (position chosen below), this leg's mid-stance.
         let ms_before = self.step_keys(kind, &other, &to, strike_phase);
         if kind == StepKind::Braking {

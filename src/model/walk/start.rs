@@ -7,6 +7,7 @@ use crate::model::params::Resolved;
 use crate::model::terrain::Terrain;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::gait::{HEEL_RISE_DESIGN_STRIDE_M, MIN_STRIKE_ANGLE, place_footfall};
+use crate::model::walk::heel_pad::HeelPad;
 use crate::model::walk::leg::{LegPhase, LegPose, LegState, LegTarget, foot_rotation};
 use glam::{DQuat, DVec3};
 
@@ -59,7 +60,7 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
             heel_rise: r.heel_rise,
             stance_rise: 0.0,
             stance_reach: r.reach_margin * dims.leg_reach(),
-            pad: 0.0,
+            pad: HeelPad::default(),
             swing: None,
             phase_serial: 0,
             pose: placeholder,
@@ -77,7 +78,7 @@ pub(crate) fn standing_start(terrain: &Terrain, r: &Resolved, design: &CurveSet)
             heel_rise: r.heel_rise,
             stance_rise: 0.0,
             stance_reach: r.reach_margin * dims.leg_reach(),
-            pad: 0.0,
+            pad: HeelPad::default(),
             swing: None,
             phase_serial: 0,
             pose: placeholder,
