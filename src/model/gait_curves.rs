@@ -270,8 +270,9 @@ const PELVIS_VERTICAL_KEYS: [[(f64, f64, f64); 3]; 3] = [
 /// without the pad, to 21.3 deg at 12 % (docs/gait-model.md §12).
 const PELVIS_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.5, 0.443, 1.511), (1.0, 1.0, 0.0)];
 
-/// The quick rise of sessions 14-24 (above), kept where the heel pad is off: on stairs (their
-/// flights were reviewed with it) and in slow walks (`speed_laws::heel_pad_share`).
+/// The quick rise of sessions 14-24 (above), kept where the heel pad is off: on stairs, slopes
+/// and rough ground (their walks were reviewed with it) and in slow walks
+/// (`speed_laws::heel_pad_share`).
 const PELVIS_QUICK_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.402, 1.336), (1.0, 1.0, 0.0)];
 
 /// The rise out of double support for a heel pad's `share` of the whole: the quick rise where
@@ -279,19 +280,14 @@ const PELVIS_QUICK_RISE_KEYS: [(f64, f64, f64); 3] = [(0.0, 0.0, 0.0), (0.35, 0.
 /// design gets the other's inner knot at its own value and slope there (a cubic split at a
 /// knot is the same cubic), so the blend is the one curve with four keys.
 fn pelvis_rise_for(share: f64) -> Curve {
+    let (quick, slow) = (PELVIS_QUICK_RISE_KEYS, PELVIS_RISE_KEYS);
     let keys: Vec<(f64, f64, f64)> = if share <= 0.0 {
-        PELVIS_QUICK_RISE_KEYS.to_vec()
+        quick.to_vec()
     } else if share >= 1.0 {
-        PELVIS_RISE_KEYS.to_vec()
+        slow.to_vec()
     } else {
-        // The quick design at 0.5 and the slow one at 0.35, by the Hermite basis.
-        let quick = [
-            (0.0, 0.0, 0.0),
-            (0.35, 0.402, 1.336),
-            (0.5, 0.601_420_118_343_195_3, 1.296_094_674_556_212_7),
-            (1.0, 1.0, 0.0),
-        ];
-        let slow = [(0.0, 0.0, 0.0), (0.35, 0.236_253_5, 1.222_13), (0.5, 0.443, 1.511), (1.0, 1.0, 0.0)];
+        let quick = [quick[0], quick[1], hermite_key(quick[1], quick[2], slow[1].0), quick[2]];
+        let slow = [slow[0], hermite_key(slow[0], slow[1], quick[1].0), slow[1], slow[2]];
         quick.iter().zip(slow).map(|(a, b)| (a.0, a.1 + share * (b.1 - a.1), a.2 + share * (b.2 - a.2))).collect()
     };
     Curve::hermite(CurveName::PelvisVerticalDsMs.key(), &keys)
@@ -403,6 +399,23 @@ const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// and the fast walk's differ in opposite directions from the comfortable one's.
 pub const DESIGN_SPEEDS_MPS: [f64; 3] = [0.8, 1.3, 1.6];
 
+/// The key (x, y, dy/dx) at `x` of the cubic Hermite segment between keys `a` and `b`.
+fn hermite_key(a: (f64, f64, f64), b: (f64, f64, f64), x: f64) -> (f64, f64, f64) {
+    let h = b.0 - a.0;
+    let t = (x - a.0) / h;
+    let (t2, t3) = (t * t, t * t * t);
+    let y = (2.0 * t3 - 3.0 * t2 + 1.0) * a.1
+        + (t3 - 2.0 * t2 + t) * h * a.2
+        + (3.0 * t2 - 2.0 * t3) * b.1
+        + (t3 - t2) * h * b.2;
+    let slope = ((6.0 * t2 - 6.0 * t) * a.1
+        + (3.0 * t2 - 4.0 * t + 1.0) * h * a.2
+        + (6.0 * t - 6.0 * t2) * b.1
+        + (3.0 * t2 - 2.0 * t) * h * b.2)
+        / h;
+    (x, y, slope)
+}
+
 /// The ground a walk's designs are chosen for: some are drawn for stairs, and the slow rise
 /// out of double support comes with the heel pad, which flat ground alone has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -423,10 +436,11 @@ impl CurveName {
         self.default_curve_for(speed_mps, Ground::Flat)
     }
 
-    /// [`CurveName::default_curve_at`] for a walk on `ground`: on stairs the slow designs of the heel rise and the fall into double support are session
-    /// 19's (`HEEL_RISE_SLOW_ON_STAIRS`, the smoothstep), with `speed_laws::STAIRS`, and the
-    /// rise out of double support the quick one of sessions 14-24 (`PELVIS_QUICK_RISE_KEYS`),
-    /// as on slopes and rough ground, where the heel pad is off.
+    /// [`CurveName::default_curve_at`] for a walk on `ground`: on stairs the slow designs of the
+    /// heel rise and the fall into double support are session 19's (`HEEL_RISE_SLOW_ON_STAIRS`,
+    /// the smoothstep), with `speed_laws::STAIRS`; off flat ground the rise out of double
+    /// support is the quick one of sessions 14-24 (`PELVIS_QUICK_RISE_KEYS`): the heel pad is
+    /// off there.
     #[must_use]
     pub fn default_curve_for(self, speed_mps: f64, ground: Ground) -> Curve {
         let mut designs: [&[(f64, f64, f64)]; 3] = match self {
@@ -563,6 +577,23 @@ mod tests {
 #[cfg(test)]
 mod speed_design_tests {
     use super::*;
+
+    #[test]
+    fn the_rise_blend_is_each_design_at_its_ends_and_between_them_in_between() {
+        // The four-key blend at a share a hair from 0 and from 1 is, within the share, the
+        // quick and the slow designs themselves: the inserted knots keep each cubic exact.
+        let (quick, slow) = (pelvis_rise_for(0.0), pelvis_rise_for(1.0));
+        let (near_quick, near_slow, half) = (pelvis_rise_for(1e-9), pelvis_rise_for(1.0 - 1e-9), pelvis_rise_for(0.5));
+        for i in 0..=100 {
+            let x = f64::from(i) / 100.0;
+            assert!((near_quick.eval(x) - quick.eval(x)).abs() < 1e-8, "{x}");
+            assert!((near_slow.eval(x) - slow.eval(x)).abs() < 1e-8, "{x}");
+            let mid = 0.5 * (quick.eval(x) + slow.eval(x));
+            assert!((half.eval(x) - mid).abs() < 1e-9, "{x}: {} against {mid}", half.eval(x));
+        }
+        // The slow design starts slower: a fifth of the way in it has risen less.
+        assert!(slow.eval(0.2) < quick.eval(0.2) - 0.05, "{} {}", slow.eval(0.2), quick.eval(0.2));
+    }
 
     #[test]
     fn each_speeds_design_is_the_blend_of_its_neighbours_and_holds_its_shape() {

@@ -14,10 +14,9 @@
 //! The compression follows the heel's share of the load: in with the body weight's transfer
 //! onto the landing leg, held to the loading response's force peak, and let go through
 //! mid-stance as the centre of pressure leaves the heel for the forefoot (sooner in fast
-//! walks, [`FAST_RELEASE`]). Held until heel rise
-//! instead (session 24's prototype), the padded leg stood 6 mm lower at mid-stance and the
-//! walked pelvis range fell 0.45-0.73 cm at every speed; let go by mid-stance, the range is
-//! the rigid walk's.
+//! walks, [`FAST_RELEASE`]). Held until heel rise instead (session 24's prototype), the padded
+//! leg stood 6 mm lower at mid-stance and the walked pelvis range fell 0.45-0.73 cm at every
+//! speed; let go by mid-stance, the range is the rigid walk's.
 
 use super::leg::{LegPhase, LegState};
 use crate::model::params::Resolved;
@@ -50,12 +49,12 @@ pub(crate) struct HeelPad {
     pub(crate) release: (f64, f64),
 }
 
-/// The pad (m) of a stance planned now in a walk resolved to `r`, if it is one a pad is for: on flat
-/// ground only (its walks alone take the slow rise out of double support that goes with the
-/// pad, `gait_curves::Ground`; on stairs, slopes and rough ground the rigid foot's walk is the
-/// one reviewed against the terrain checks), and not in a stop's braking or closing step: the
-/// settle brings the pelvis to rest as high as the rigid legs reach, and the closing stance
-/// stands there with its phase held in loading.
+/// The heel pad of a stance planned now at `speed_mps` in a walk resolved to `r`, if it is
+/// one a pad is for (`padded`): on flat ground only (its walks alone take the slow rise out of
+/// double support that goes with the pad, `gait_curves::Ground`; on stairs, slopes and rough
+/// ground the rigid foot's walk is the one reviewed against the terrain checks), and not in a
+/// stop's braking or closing step: the settle brings the pelvis to rest as high as the rigid
+/// legs reach, and the closing stance stands there with its phase held in loading.
 #[must_use]
 pub(crate) fn for_stance(padded: bool, r: &Resolved, speed_mps: f64) -> HeelPad {
     if !padded {
