@@ -118,7 +118,8 @@ pub fn render(params: &WalkParams, title: &str) -> String {
     out.push_str(&names.join(", "));
     out.push_str(".\n# The defaults of heel_rise, swing_forward, swing_heel_height and pelvis_vertical depend on\n");
     out.push_str("# the speed (drawn at 0.8, 1.3 and 1.6 m/s and blended between); a [curves] entry holds at\n");
-    out.push_str("# every speed.\n");
+    out.push_str("# every speed. The default pelvis_vertical_ds_ms starts slowly where the heel pad is whole\n");
+    out.push_str("# (legs.heel_pad_mm, on flat ground) and quickly where there is none, blended between.\n");
     out.push_str(
         "# Example, the default heel-rise curve at 1.3 m/s (foot-ground angle in degrees for a 1.8 m stride):\n",
     );

@@ -182,7 +182,7 @@ impl Walker {
                     );
                     let ankle = footfall.heel
                         - foot_rotation(footfall.yaw, pitch) * r.dims.heel_local()
-                        - glam::DVec3::new(0.0, pad, 0.0);
+                        - DVec3::new(0.0, pad, 0.0);
                     Allowed::Height(allowed_height(self.rekeyed_hip(&pose, x, phase, side_sign), ankle, limit))
                 }
             };
