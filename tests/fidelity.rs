@@ -56,6 +56,8 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // Session 25, the heel pad and the slow rise out of double support: 1.43 / 0.996 / 0;
         // 2.91 / 0.993 / 6; 2.03 / 0.976 / 0 (before: 1.62 / 0.997 / 0; 3.90 / 0.986 / 10; 1.97 /
         // 0.981 / 0).
+        // Session 26, the swing knee's peak sooner and the swing ankle's cap lower (issue 12's
+        // table): 1.51 / 0.996 / 0; 3.07 / 0.992 / 6; 2.03 / 0.973 / 0.
         ("configs/default.toml", &[], [(1.6, 0.995, 0.0), (3.1, 0.99, 8.0), (2.2, 0.97, 4.0)]),
         // 0.9 m/s, between the 0.80 and 1.00 m/s blocks: 2.54 / 0.992 / 0; 3.44 / 0.987 / 2;
         // 1.79 / 0.972 / 0 (session 20, the slow walk's pelvis falling late into double support
@@ -86,8 +88,11 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // r; session 14: 4.12 / 0.984, 6.84 / 0.989 / 12, 2.00 / 0.962).
         // Session 22, the pelvis nearer the heel at 0.7 and 0.8 m/s for people's vertical range
         // (1.99 -> 2.06 cm here) and the swing heel's lead capped (0.15 -> 0.09): 2.33 / 0.991 / 0;
-        // 3.60 / 0.987 / 0; 2.02 / 0.963 / 0.
-        ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.4, 0.99, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
+        // 3.60 / 0.987 / 0; 2.02 / 0.963 / 0. Session 26, the swing ankle's cap lower (the walk's
+        // peak 7.8 -> 7.2°, people's 6.7) lifts the late-swing heel instead, and the hip flexes
+        // more there: 2.30 -> 2.41 / 0.992 / 0; 3.54 -> 3.63 / 0.987 / 0; 1.93 -> 1.85 / 0.967 / 0
+        // (the hip's bound 2.4 -> 2.5).
+        ("configs/default.toml", &["walk.speed_mps=0.8"], [(2.5, 0.99, 0.0), (3.7, 0.985, 4.0), (2.1, 0.96, 4.0)]),
         // 2.68 / 0.990 / 0; 3.75 / 0.983 / 6; 1.51 / 0.980 / 0 (session 20, the walked range
         // 1.85 -> 2.20 cm; session 19: 2.48 / 0.991 / 0, 3.39 / 0.991 / 4, 1.28 / 0.985 / 0;
         // session 18: 2.40 /
@@ -327,7 +332,10 @@ fn the_calibrated_shapes_are_there_on_the_default_walk() {
     // The knee flexes again from heel rise instead of being held at its reach limit: up 25°
     // from 46 % to toe-off (norm: 3.7° → 35°); before, held at 5–7° from 30 % to 45 %.
     assert!(at(&knee, 62) - at(&knee, 46) > 25.0, "{} -> {}", at(&knee, 46), at(&knee, 62));
-    // The swing ankle near neutral after mid-swing (norm 0–6°); before, 20° dorsiflexion.
+    // The swing ankle near neutral after mid-swing (issue 12's table: 0-5°; the norms' own
+    // 5.4° at 85 %): session 26, 4.7° at 84-86 %; before it 6.0°, and at first 20°.
+    let swing_ankle = ankle[38..=50].iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    assert!((0.0..=5.0).contains(&swing_ankle), "swing ankle peaks at {swing_ankle}");
     for pct in [80, 84, 88, 92] {
         assert!((-5.0..=8.0).contains(&at(&ankle, pct)), "ankle at {pct} %: {}", at(&ankle, pct));
     }
@@ -339,9 +347,14 @@ fn the_calibrated_shapes_are_there_on_the_default_walk() {
         "loading knee {load} at {} %",
         2 * load_i
     );
-    // The swing knee's peak in early-to-mid swing (norm 62° at 74 %).
+    // The swing knee's peak (issue 12's table: 55-65° at 70-74 %; the norms' 63.0° at 74 %):
+    // session 26, 61.0° at 73.6 % read every 1 %; before it 62.9° at 75 %.
     let (peak_i, peak) = knee.iter().enumerate().skip(31).fold((0, 0.0), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
-    assert!((70..=80).contains(&(2 * peak_i)) && (55.0..=70.0).contains(&peak), "{peak} at {} %", 2 * peak_i);
+    assert!((70..=74).contains(&(2 * peak_i)) && (55.0..=65.0).contains(&peak), "{peak} at {} %", 2 * peak_i);
+    // Read between the 2 % samples (a parabola through the peak and its neighbours).
+    let (a, b, c) = (knee[peak_i - 1], knee[peak_i], knee[peak_i + 1]);
+    let peak_pct = 2.0 * (peak_i as f64 + 0.5 * (a - c) / (a - 2.0 * b + c));
+    assert!((70.0..=74.0).contains(&peak_pct), "swing knee peaks at {peak_pct:.2} %");
 }
 
 #[test]

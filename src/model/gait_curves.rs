@@ -305,6 +305,15 @@ fn pelvis_rise_for(share: f64) -> Curve {
 /// 0.8 / 1.0 / 1.3 / 1.6 m/s (docs/gait-model.md §12 has the denser variants that broke a stop
 /// on slope_up). Fitted at each of [`DESIGN_SPEEDS_MPS`] (see [`SWING_FORWARD_KEYS`]): the
 /// heel nearly level at 1.4-2.1 cm from 0.75 to 0.88 of the swing, then down onto the footfall.
+///
+/// The comfortable design's peak and mid-swing keys (and its forward partner's key at 0.316)
+/// were refitted in session 26 for issue 12's swing knee, which peaked at 62.9° at 75 % of the
+/// cycle (normal adults: 55-65° at 70-74 %; the norms' 63.0° at 74 %): the heel 2.3 cm higher
+/// at 0.16 of the swing flexes the knee sooner (4 keys, Nelder-Mead, 200 walks at 1.3 m/s on the
+/// mean hip / knee / ankle RMS with the peak's timing, read between the 1 % samples, held
+/// under 73.6 %), together with the swing simulation's lower dorsiflexion cap (5°, `walk::
+/// swing_sim`). The default walk's knee now peaks at 61.0° at 73.6 % and its swing ankle at
+/// 4.7°, for knee RMS 2.91 -> 3.07 and hip 1.43 -> 1.51 deg (docs/gait-model.md §12).
 const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
     [
         (0.0, 0.20, 0.7),
@@ -316,8 +325,8 @@ const SWING_HEEL_HEIGHT_KEYS: [[(f64, f64, f64); 6]; 3] = [
     ],
     [
         (0.0, 0.20, 0.7),
-        (0.16, 0.257, 0.0),
-        (0.47, 0.1842, -0.6),
+        (0.16, 0.2797, 0.0),
+        (0.47, 0.1824, -0.3239),
         (0.75, 0.0209, -0.1),
         (0.88, 0.0176, -0.082),
         (1.0, 0.0, -0.1),
@@ -387,7 +396,7 @@ const HEEL_RISE_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// §12, session 18).
 const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
     [(0.0, 0.0, 0.5), (0.316, 0.1824, 0.98), (0.632, 0.5785, 1.2631), (0.842, 0.9606, 0.503), (1.0, 1.0, 0.0238)],
-    [(0.0, 0.0, 0.5), (0.316, 0.2293, 0.98), (0.632, 0.5997, 1.8539), (0.842, 0.9344, 0.9745), (1.0, 1.0, 0.265)],
+    [(0.0, 0.0, 0.5), (0.316, 0.2215, 0.98), (0.632, 0.5997, 1.8539), (0.842, 0.9344, 0.9745), (1.0, 1.0, 0.265)],
     [(0.0, 0.0, 0.5), (0.316, 0.2641, 0.98), (0.632, 0.6217, 1.909), (0.842, 0.9331, 0.9431), (1.0, 1.0, 0.304)],
 ];
 

@@ -257,11 +257,16 @@ fn lift_toe(plan: &mut SwingPlan, s: f64, ankle_deg: f64, (deficit, lever): (f64
 const TOE_LANDING_RAMP: f64 = 0.35;
 
 /// Most dorsiflexion (deg) the swing simulation asks of the ankle, where a toe needs lifting,
-/// before it lifts the heel instead: the normative swing ankle peaks at 5.6 ± 2.0 deg at 86 %
-/// of the cycle (data/normative/), gaitlab's swing-ankle curve at 5.7. A raise moves a knot of
-/// the curve, which carries the samples beside it further: the default walk's adapted curve
-/// peaks at 8.2 deg (the norms' mean + 1.3 SD).
-const SWING_DORSI_MAX_DEG: f64 = 7.0;
+/// before it lifts the heel instead: the normative swing ankle peaks at 5.4-6.7 deg at 84-85 %
+/// of the cycle from 0.8 to 1.6 m/s (data/normative/), and normal adults' at 0-5 deg (issue
+/// 12's table). A raise moves a knot of the curve, which carries the samples beside it further.
+/// At 7 deg (sessions 15-25) the default walk's ankle peaked at 6.0 deg, the toe's clearance
+/// at 83-87 % of the cycle (the foot still pitched down, its heel 4-9 cm up) bought by the ankle
+/// alone; at 5 it peaks at 4.7 (0.8 / 1.6 m/s: 7.8 -> 7.2, 7.2 -> 6.1 deg against people's 6.7 /
+/// 5.9), the rest bought by the heel, which flexes the late-swing hip by up to 1.7 deg (hip RMS
+/// +0.08 deg at 1.3 m/s after the heel-height design's refit, docs/gait-model.md §12,
+/// session 26).
+const SWING_DORSI_MAX_DEG: f64 = 5.0;
 
 /// One sample of the swing simulation as a pass left it: the heel height and ankle it was
 /// solved at, its target, and its leg pose once solved (a sample lifted for reach is not).
