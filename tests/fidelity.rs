@@ -105,13 +105,18 @@ fn joint_curves_stay_as_close_to_the_norms_as_calibrated() {
         // 0.974 / 0 (before: 2.10 / 0.995 / 0; 3.64 / 0.984 / 6; 1.31 / 0.984 / 0 — the ankle's
         // price, its loading plantarflexion 2° deeper than people's).
         ("configs/default.toml", &["walk.speed_mps=1.0"], [(2.1, 0.99, 0.0), (2.9, 0.988, 2.0), (1.8, 0.97, 4.0)]),
-        // Slower than the slowest norms (0.80 m/s, compared with that block): session 22's pelvis
+        // Slower than the 0.80 m/s block (until session 26 the slowest, compared with it): session 22's pelvis
         // nearer the heel for people's vertical range (1.54 -> 1.97 cm at 0.7 m/s) costs the shape
         // of the ankle, r 0.942 -> 0.906 at 0.7 and 0.953 -> 0.932 at 0.75 m/s, under issue 12's
         // 0.95 (asked at 0.8 m/s and up): 3.03 / 0.991 / 0; 3.67 / 0.989 / 0; 3.15 / 0.906 / 0 and
-        // 2.56 / 0.991 / 0; 3.56 / 0.989 / 0; 2.62 / 0.932 / 0.
-        ("configs/default.toml", &["walk.speed_mps=0.7"], [(3.2, 0.985, 0.0), (3.9, 0.985, 4.0), (3.3, 0.9, 4.0)]),
-        ("configs/default.toml", &["walk.speed_mps=0.75"], [(2.7, 0.985, 0.0), (3.8, 0.985, 4.0), (2.8, 0.925, 4.0)]),
+        // 2.56 / 0.991 / 0; 3.56 / 0.989 / 0; 2.62 / 0.932 / 0. Session 26, the norms' 0.583 m/s
+        // block (24 adults at 0.51-0.69 m/s; before it 0.7 and 0.75 m/s read the 0.796 block):
+        // 0.7 m/s 3.01 -> 2.90 / 0.991 / 0; 3.62 -> 4.16 / 0.990 -> 0.988 / 0; 2.99 -> 2.65 / 0.917
+        // -> 0.935 / 0, the knee further from people who flex it 7.4° in loading at 0.7 m/s (the
+        // walk 12.6°); 0.75 m/s 2.53 / 0.992 / 0; 3.50 -> 3.73 / 0.989 / 0; 2.48 -> 2.34 / 0.941 ->
+        // 0.947 / 0 (the knee's bound at 0.7 m/s 3.9 -> 4.3).
+        ("configs/default.toml", &["walk.speed_mps=0.7"], [(3.2, 0.985, 0.0), (4.3, 0.985, 4.0), (3.3, 0.9, 4.0)]),
+        ("configs/default.toml", &["walk.speed_mps=0.75"], [(2.7, 0.985, 0.0), (3.9, 0.985, 4.0), (2.8, 0.925, 4.0)]),
         // As the default.
         ("configs/default.toml", &["walk.speed_mps=1.3"], [(1.6, 0.995, 0.0), (3.1, 0.99, 8.0), (2.2, 0.97, 4.0)]),
         // 2.30 / 0.994 / 0; 3.99 / 0.984 / 10; 2.32 / 0.974 / 0 (session 19; session 18: 1.91 /

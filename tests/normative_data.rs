@@ -41,6 +41,31 @@ fn the_normative_curves_are_adult_walking() {
     assert!(h < -5.0 && (48.0..=58.0).contains(&at), "{h} at {at}");
 }
 
+/// The joint-angle norms by speed (`joint_angles_by_speed.csv`): six blocks from 0.58 to 1.80
+/// m/s, speeds rising, the 0.583 m/s block (session 26: 24 adults' T01 / T02 trials at 0.51-0.69
+/// m/s) the slowest. People flex the knee more in loading and in swing the faster they walk, and
+/// the slowest block pushes off least: loading knee 6.4 / 8.3 / 11.3 / 16.5 / 19.9 / 22.0°,
+/// swing knee 53.9 / 57.5 / 60.6 / 63.0 / 63.4 / 63.5°, push-off -4.6 / -7.9 / -10.7 / -14.5 /
+/// -15.8 / -15.4°.
+#[test]
+fn the_joint_angle_norms_run_from_0_58_to_1_80_m_s_and_follow_speed() {
+    let refs = gaitlab::normative::References::built_in();
+    let speeds: Vec<f64> = refs.blocks.iter().map(|b| b.speed_mps).collect();
+    assert_eq!(speeds, [0.583, 0.796, 0.997, 1.303, 1.593, 1.799]);
+    let peak = |b: &gaitlab::normative::Reference, stem: &str, from: usize, to: usize, sign: f64| {
+        let mean = &b.curves.iter().find(|c| c.0 == stem).unwrap().1;
+        (from..=to).map(|i| sign * mean[i]).fold(f64::NEG_INFINITY, f64::max) * sign
+    };
+    let loading: Vec<f64> = refs.blocks.iter().map(|b| peak(b, "knee_flex", 0, 25, 1.0)).collect();
+    let swing: Vec<f64> = refs.blocks.iter().map(|b| peak(b, "knee_flex", 60, 90, 1.0)).collect();
+    let push_off: Vec<f64> = refs.blocks.iter().map(|b| peak(b, "ankle_dorsi", 55, 80, -1.0)).collect();
+    for w in 0..5 {
+        assert!(loading[w] < loading[w + 1] && swing[w] < swing[w + 1], "{loading:?} {swing:?}");
+    }
+    assert!((loading[0] - 6.38).abs() < 0.01 && (swing[0] - 53.85).abs() < 0.01, "{loading:?} {swing:?}");
+    assert!(push_off[0] > push_off[1] && (push_off[0] + 4.60).abs() < 0.01, "{push_off:?}");
+}
+
 /// The spatiotemporal norms by speed (`spatiotemporal_by_speed.csv`, Fukuchi et al. 2018 via
 /// BMClab/h2a_age_spt): six treadmill blocks whose figures agree with their own speeds, and
 /// which rise with speed as cadence and stride do in every adult gait study.

@@ -213,7 +213,7 @@ const PELVIS_ROTATION_KEYS: [(f64, f64, f64); 11] = [
 ];
 
 /// Pelvic obliquity's unit shape: the speed-matched norms' own (data/normative/
-/// joint_angles_by_speed.csv, the five speed blocks' mean curves each scaled to a unit peak,
+/// joint_angles_by_speed.csv, the 0.80-1.80 m/s blocks' mean curves each scaled to a unit peak,
 /// averaged and made antisymmetric). The stance-side hip is highest at 15 % (loading response,
 /// as the opposite side drops after its toe-off), back to level by 35-40 % and slightly low by
 /// the opposite heel strike; the keys' RMS from that shape is 0.017 of the peak (0.1° at
