@@ -438,7 +438,10 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
     // mid-stance pelvis nearer the heel and the heel rise later at 0.7 and 0.8 m/s
     // (`speed_laws`' 0.7 m/s knots, the 0.8 m/s ones moved): compare's 1.97 / 2.06 / 2.20 /
     // 3.07 / 3.71 cm, from 0.7 m/s inside people's mean ± 2 SD (the slowest adults, 0.77 m/s,
-    // 2.49 ± 0.28, read at 0.7 m/s too), held here.
+    // 2.49 ± 0.28, read at 0.7 m/s too), held here. Session 26, the same adults measured at
+    // 0.592 m/s (2.10 ± 0.61 cm, their T01 / T02 trials): at 0.7 m/s people's range reads 2.33 ±
+    // 0.41 cm, between that block and the 0.774 one, and the walk's 1.97 is inside their mean ± 1
+    // SD (-0.86 SD), held here; Orendurff's 2.7 cm at 0.7 m/s is other adults' centre of mass.
     let people = gaitlab::normative::PelvisNorms::built_in();
     let mut previous: Option<(f64, f64, f64)> = None;
     for (speed, least_share) in [(0.7, 0.75), (0.8, 0.75), (1.0, 0.7), (1.3, 0.75), (1.6, 0.70)] {
@@ -454,7 +457,7 @@ fn the_pelvis_rises_more_and_sways_less_as_the_walk_speeds_up() {
         assert!(vertical < 4.8 + 0.5, "{speed} m/s: vertical {vertical}");
         let (measured, sd) = people.at(speed).vertical_range_cm;
         assert!(vertical >= least_share * measured, "{speed} m/s: vertical {vertical} against people's {measured}");
-        if speed >= 1.3 {
+        if speed >= 1.3 || speed <= 0.7 {
             assert!(vertical >= measured - sd, "{speed} m/s: vertical {vertical} against people's {measured} +- {sd}");
         }
         assert!(

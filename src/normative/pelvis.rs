@@ -1,6 +1,6 @@
 //! How far people's pelvis rises and falls at a walking speed: the built-in table
 //! `data/normative/pelvis_vertical_by_speed.csv` (the centre of the four pelvis markers, WBDS
-//! young adults on a treadmill at 0.8 to 1.6 m/s; source, licence, derivation and its limits
+//! young adults on a treadmill at 0.6 to 1.6 m/s; source, licence, derivation and its limits
 //! beside it), read at the walk's speed as the other norms are.
 //!
 //! Why a measured pelvis and not Orendurff et al. 2004's centre-of-mass figures: those come
@@ -103,11 +103,12 @@ mod tests {
     #[test]
     fn the_built_in_table_parses_and_people_s_pelvis_rises_more_the_faster_they_walk() {
         let norms = PelvisNorms::built_in();
-        assert_eq!(norms.blocks.len(), 4);
+        assert_eq!(norms.blocks.len(), 5);
         let ranges: Vec<f64> = norms.blocks.iter().map(|b| b.vertical_range_cm.0).collect();
         assert!(ranges.windows(2).all(|w| w[1] > w[0]), "{ranges:?}");
         // Between two blocks, linear; beyond the ends, the end block.
-        let (slow, fast) = (norms.blocks[0], norms.blocks[3]);
+        let (slow, fast) = (norms.blocks[0], norms.blocks[4]);
+        assert!((0.55..0.62).contains(&slow.speed_mps), "{slow:?}");
         assert_eq!(norms.at(0.5).vertical_range_cm, slow.vertical_range_cm);
         assert_eq!(norms.at(2.0).vertical_range_cm, fast.vertical_range_cm);
         let (a, b) = (norms.blocks[1], norms.blocks[2]);
