@@ -408,21 +408,12 @@ const SWING_FORWARD_KEYS: [[(f64, f64, f64); 5]; 3] = [
 /// and the fast walk's differ in opposite directions from the comfortable one's.
 pub const DESIGN_SPEEDS_MPS: [f64; 3] = [0.8, 1.3, 1.6];
 
-/// The key (x, y, dy/dx) at `x` of the cubic Hermite segment between keys `a` and `b`.
+/// The key (x, y, dy/dx) at `x` of the cubic Hermite segment between keys `a` and `b`: the
+/// segment as the curve the keys build (`Curve::hermite`, its handles at the thirds, so x is
+/// linear in the Bézier parameter and read exactly), evaluated there.
 fn hermite_key(a: (f64, f64, f64), b: (f64, f64, f64), x: f64) -> (f64, f64, f64) {
-    let h = b.0 - a.0;
-    let t = (x - a.0) / h;
-    let (t2, t3) = (t * t, t * t * t);
-    let y = (2.0 * t3 - 3.0 * t2 + 1.0) * a.1
-        + (t3 - 2.0 * t2 + t) * h * a.2
-        + (3.0 * t2 - 2.0 * t3) * b.1
-        + (t3 - t2) * h * b.2;
-    let slope = ((6.0 * t2 - 6.0 * t) * a.1
-        + (3.0 * t2 - 4.0 * t + 1.0) * h * a.2
-        + (6.0 * t - 6.0 * t2) * b.1
-        + (3.0 * t2 - 2.0 * t) * h * b.2)
-        / h;
-    (x, y, slope)
+    let segment = Curve::hermite("segment", &[a, b]).expect("two keys with rising x are a valid curve");
+    (x, segment.eval(x), segment.slope(x))
 }
 
 /// The ground a walk's designs are chosen for: some are drawn for stairs, and the slow rise

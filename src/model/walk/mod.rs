@@ -137,16 +137,22 @@ pub struct Walker {
     pace: Pace,
 }
 
+/// The design curves' kind of ground for a terrain: the one mapping both the curves (the slow
+/// rise that goes with the heel pad) and the planner (which stances get a pad) read.
+pub(crate) fn ground_of(kind: TerrainChoice) -> Ground {
+    match kind {
+        TerrainChoice::Flat => Ground::Flat,
+        TerrainChoice::Stairs => Ground::Stairs,
+        TerrainChoice::Slope | TerrainChoice::Random => Ground::Uneven,
+    }
+}
+
 /// Checks that `params` make a walk — the curve overrides build, the leg phases come in
 /// order — without building one (config validation asks this of every file), and returns
 /// what a walker starts from.
 pub fn check(params: &WalkParams) -> Result<(Resolved, CurveSet), ModelError> {
     let r = params.resolve();
-    let ground = match params.terrain.kind {
-        TerrainChoice::Flat => Ground::Flat,
-        TerrainChoice::Stairs => Ground::Stairs,
-        TerrainChoice::Slope | TerrainChoice::Random => Ground::Uneven,
-    };
+    let ground = ground_of(params.terrain.kind);
     let design = CurveSet::with_overrides(&params.curves, params.walk.speed_mps, ground, heel_pad::rise_share(&r))
         .map_err(|e| ModelError(e.to_string()))?;
     if r.toe_off.is_nan() || r.toe_off <= 0.5 {

@@ -9,8 +9,7 @@
 
 use crate::model::body::Side;
 use crate::model::curve::Curve;
-use crate::model::gait_curves::CurveName;
-use crate::model::params::TerrainChoice;
+use crate::model::gait_curves::{CurveName, Ground};
 use crate::model::search::Candidate;
 use crate::model::walk::ankle_pitch::foot_pitch_for_ankle;
 use crate::model::walk::gait::{MIN_STRIKE_ANGLE, shank_angle};
@@ -70,7 +69,7 @@ impl Walker {
         // (at the walk's end a shorter braking step, then the closing step beside it).
         let (kind, to) = self.next_footfall(side, &other);
         let strike_phase = self.legs[i].cycle_start + 1.0;
-        let flat = self.params.terrain.kind == TerrainChoice::Flat;
+        let flat = super::ground_of(self.params.terrain.kind) == Ground::Flat;
         let walking = matches!(kind, StepKind::Starting | StepKind::Steady);
         self.legs[i].pad = super::heel_pad::for_stance(flat && walking, &self.gait.r, self.params.walk.speed_mps);
         // Pelvis keys: the coming double support (position chosen below), this leg's mid-stance.
